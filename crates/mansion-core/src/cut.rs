@@ -1,0 +1,482 @@
+//! The topology-aware cutting node: adaptive seed sampling, a batch of candidates per retry (grow,
+//! clean, check topology, score), retries with growing radii, and the Monte Carlo fallback.
+//!
+//! Candidates are independent, so a batch runs in parallel with rayon; each candidate draws from its
+//! own RNG derived from `(rng_seed, round, retry, index)`, and the winner is the lowest energy with
+//! ties to the lowest index, so the result never depends on the thread count.
+
+use crate::cleanup::{self, Scratch};
+use crate::energy::{self, RoomFeatures, Weights};
+use crate::growth::{self, Grower};
+use crate::grid::{Grid, Label, Walls, EMPTY};
+use crate::region::Region;
+use crate::topology;
+use rand::{Rng, SeedableRng};
+use rand_xoshiro::Xoshiro256PlusPlus;
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+
+/// One cut round as the solver hands it to the cutting node. Coordinates are grid units of the
+/// (padded) solver grid.
+#[derive(Debug, Clone)]
+pub struct RoundSpec {
+    /// The label whose cells are cut.
+    pub parent: Label,
+    /// Rooms grown from seeds: the children, plus the parent when it has a seed of its own.
+    pub growers: Vec<Grower>,
+    /// Planned seed of each grower.
+    pub planned: Vec<[f64; 2]>,
+    /// The parent, when it keeps the leftover instead of growing; its target in cells.
+    pub remainder: Option<(Label, f64)>,
+    /// Labels that no later round cuts: fixed walls and minimum width apply to them now.
+    pub final_labels: Vec<Label>,
+    /// Graph edges to check after this round (both ends exist, one of them in this round), with the
+    /// names used in diagnostics.
+    pub required: Vec<(Label, Label)>,
+    /// Names of every label on the floor, for diagnostics.
+    pub names: Vec<String>,
+}
+
+/// Sampling and scoring settings of the cutting node.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct CutOptions {
+    pub retries: usize,
+    pub batch: usize,
+    /// Radius multipliers, one per retry (the last one repeats).
+    pub gammas: Vec<f64>,
+    /// r_base in R⁰ = r_base + k·a_r/|Ω(parent)|, in cells (the paper fixes 2).
+    pub r_base: f64,
+    pub k: f64,
+    /// Minimum distance between the seeds of one candidate, in cells.
+    pub seed_separation: f64,
+    /// Candidates tried by the Monte Carlo fallback.
+    pub fallback_samples: usize,
+    /// Shared wall needed for an edge to count as realised, in cell edges.
+    pub min_contact: u32,
+    /// Minimum room width in cells, if any.
+    pub min_width: Option<usize>,
+    pub weights: Weights,
+    pub rng_seed: u64,
+}
+
+use serde::{Deserialize, Serialize};
+
+impl Default for CutOptions {
+    fn default() -> Self {
+        CutOptions {
+            retries: 10,
+            batch: 100,
+            gammas: vec![1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0],
+            r_base: 2.0,
+            k: 8.0,
+            seed_separation: 2.0,
+            fallback_samples: 400,
+            min_contact: 2,
+            min_width: None,
+            weights: Weights::default(),
+            rng_seed: 0,
+        }
+    }
+}
+
+/// What the cutting node returns for a round.
+#[derive(Debug, Clone)]
+pub struct CutOutcome {
+    pub grid: Grid,
+    /// Retry that produced the winner, or None when the fallback did.
+    pub retry: Option<usize>,
+    pub fallback: bool,
+    pub candidates: usize,
+    /// Rejected candidates counted by reason.
+    pub rejected: BTreeMap<String, usize>,
+    /// Features of every round label of the winner, in `labels()` order.
+    pub features: Vec<(Label, RoomFeatures)>,
+    pub energy: f64,
+}
+
+/// Why a candidate failed the filter.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Reject {
+    Unfilled,
+    Missing(Label),
+    Disconnected(Label),
+    Straddles(Label),
+    TooNarrow(Label),
+    Adjacency(Label, Label),
+}
+
+impl Reject {
+    fn describe(&self, names: &[String]) -> String {
+        let n = |l: &Label| names.get(*l as usize).cloned().unwrap_or_else(|| format!("#{l}"));
+        match self {
+            Reject::Unfilled => "cells left unassigned".into(),
+            Reject::Missing(l) => format!("room '{}' vanished", n(l)),
+            Reject::Disconnected(l) => format!("room '{}' in several pieces", n(l)),
+            Reject::Straddles(l) => format!("room '{}' straddles a fixed wall", n(l)),
+            Reject::TooNarrow(l) => format!("room '{}' narrower than the minimum width", n(l)),
+            Reject::Adjacency(a, b) => format!("no shared wall between '{}' and '{}'", n(a), n(b)),
+        }
+    }
+}
+
+/// A round prepared once and shared by all its candidates.
+pub struct Prepared<'a> {
+    pub spec: &'a RoundSpec,
+    pub walls: &'a Walls,
+    pub opts: &'a CutOptions,
+    pub region: Region,
+    /// The layout with the region emptied.
+    pub base: Grid,
+    /// Round labels: growers, then the remainder label if any.
+    pub labels: Vec<Label>,
+    pub targets: Vec<f64>,
+    pub seeds: Vec<Option<[f64; 2]>>,
+    /// label → position in `labels`, or -1.
+    pub index: Vec<i16>,
+    pub round: u64,
+}
+
+impl<'a> Prepared<'a> {
+    pub fn new(grid: &Grid, walls: &'a Walls, spec: &'a RoundSpec, opts: &'a CutOptions, n_labels: usize, round: u64) -> Self {
+        let region = Region::of_label(grid, spec.parent);
+        let mut base = grid.clone();
+        for &c in &region.cells {
+            base.cells[c as usize] = EMPTY;
+        }
+        let mut labels: Vec<Label> = spec.growers.iter().map(|g| g.label).collect();
+        let mut targets: Vec<f64> = spec.growers.iter().map(|g| g.target).collect();
+        let mut seeds: Vec<Option<[f64; 2]>> = spec.planned.iter().map(|&p| Some(p)).collect();
+        if let Some((l, t)) = spec.remainder {
+            labels.push(l);
+            targets.push(t);
+            seeds.push(None);
+        }
+        let mut index = vec![-1i16; n_labels];
+        for (k, &l) in labels.iter().enumerate() {
+            index[l as usize] = k as i16;
+        }
+        Prepared { spec, walls, opts, region, base, labels, targets, seeds, index, round }
+    }
+
+    /// Perturbation radius of each grower at retry `j`.
+    fn radii(&self, j: usize) -> Vec<f64> {
+        let o = self.opts;
+        let gamma = o.gammas.get(j).or(o.gammas.last()).copied().unwrap_or(1.0);
+        let area = self.region.len().max(1) as f64;
+        self.spec
+            .growers
+            .iter()
+            .map(|g| gamma * (o.r_base + o.k * g.target / area))
+            .collect()
+    }
+
+    fn in_region(&self, p: [f64; 2]) -> Option<usize> {
+        if p[0] < 0.0 || p[1] < 0.0 {
+            return None;
+        }
+        let (x, y) = (p[0] as usize, p[1] as usize);
+        if x >= self.region.w || y >= self.region.h {
+            return None;
+        }
+        let c = y * self.region.w + x;
+        self.region.inside[c].then_some(c)
+    }
+
+    /// The region cell nearest to `p` that is not taken.
+    fn nearest_free(&self, p: [f64; 2], taken: &[usize]) -> Option<usize> {
+        let w = self.region.w;
+        self.region
+            .cells
+            .iter()
+            .map(|&c| c as usize)
+            .filter(|c| !taken.contains(c))
+            .min_by(|&a, &b| {
+                let da = dist2(centre(a, w), p);
+                let db = dist2(centre(b, w), p);
+                da.total_cmp(&db).then(a.cmp(&b))
+            })
+    }
+
+    /// Seed cells for one candidate: each planned seed perturbed inside its disc, kept in the region
+    /// and apart from the others; `radii == None` keeps the planned seeds as they are.
+    pub fn sample_seeds<R: Rng>(&self, rng: &mut R, radii: Option<&[f64]>) -> Option<Vec<usize>> {
+        let w = self.region.w;
+        let sep2 = self.opts.seed_separation * self.opts.seed_separation;
+        let mut out: Vec<usize> = Vec::with_capacity(self.spec.growers.len());
+        for (k, &p) in self.spec.planned.iter().enumerate() {
+            let mut chosen = None;
+            if let Some(radii) = radii {
+                for _ in 0..32 {
+                    let r = radii[k] * rng.random::<f64>().sqrt();
+                    let t = rng.random::<f64>() * std::f64::consts::TAU;
+                    let q = [p[0] + r * t.cos(), p[1] + r * t.sin()];
+                    if let Some(c) = self.in_region(q) {
+                        if !out.contains(&c) && out.iter().all(|&o| dist2(centre(o, w), centre(c, w)) >= sep2) {
+                            chosen = Some(c);
+                            break;
+                        }
+                    }
+                }
+            }
+            let c = match chosen {
+                Some(c) => c,
+                None => match self.in_region(p) {
+                    Some(c) if !out.contains(&c) => c,
+                    _ => self.nearest_free(p, &out)?,
+                },
+            };
+            out.push(c);
+        }
+        Some(out)
+    }
+
+    /// Monte Carlo seeds: uniform in the region, larger rooms first, each the best of a few draws
+    /// by distance to the seeds already placed relative to the rooms' sizes (repulsion).
+    pub fn sample_fallback_seeds<R: Rng>(&self, rng: &mut R) -> Option<Vec<usize>> {
+        let w = self.region.w;
+        let n = self.spec.growers.len();
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by(|&a, &b| self.spec.growers[b].target.total_cmp(&self.spec.growers[a].target).then(a.cmp(&b)));
+        let mut seeds = vec![usize::MAX; n];
+        let mut placed: Vec<usize> = Vec::with_capacity(n);
+        for &k in &order {
+            let mut best: Option<(f64, usize)> = None;
+            for _ in 0..8 {
+                let c = self.region.cells[rng.random_range(0..self.region.len())] as usize;
+                if placed.iter().any(|&o| seeds[o] == c) {
+                    continue;
+                }
+                let rk = self.spec.growers[k].target.sqrt();
+                let score = placed
+                    .iter()
+                    .map(|&o| dist2(centre(seeds[o], w), centre(c, w)).sqrt() / (rk + self.spec.growers[o].target.sqrt()))
+                    .fold(f64::INFINITY, f64::min);
+                if best.is_none_or(|(s, _)| score > s) {
+                    best = Some((score, c));
+                }
+            }
+            let (_, c) = best?;
+            seeds[k] = c;
+            placed.push(k);
+        }
+        Some(seeds)
+    }
+
+    /// One candidate: grow from the seeds, hand the leftover to the parent or to the neighbours,
+    /// clean, check the topology and score.
+    pub fn candidate(&self, seeds: &[usize], rng: &mut Xoshiro256PlusPlus, s: &mut Scratch) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
+        let mut grid = self.base.clone();
+        growth::grow(&mut grid, self.walls, &self.spec.growers, seeds, rng);
+        self.finish(grid, s)
+    }
+
+    /// Everything after growth; public so benchmarks and references can share it.
+    pub fn finish(&self, mut grid: Grid, s: &mut Scratch) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
+        if let Some((parent, _)) = self.spec.remainder {
+            cleanup::assign_remainder(&mut grid, &self.region, self.walls, parent, s);
+        }
+        if !cleanup::clean(&mut grid, &self.region, self.walls, s) {
+            return Err(Reject::Unfilled);
+        }
+        self.check(&grid, s)?;
+        let mut feats = energy::features(&grid, &self.region, &self.labels, &self.index, &self.targets, &self.seeds);
+        let e = energy::score(&mut feats, &self.opts.weights);
+        Ok((e, grid, feats))
+    }
+
+    /// The topology filter.
+    pub fn check(&self, grid: &Grid, s: &mut Scratch) -> Result<(), Reject> {
+        for &l in &self.labels {
+            match topology::pieces(grid, &self.region, l, s) {
+                (0, _) => return Err(Reject::Missing(l)),
+                (1, _) => {}
+                _ => return Err(Reject::Disconnected(l)),
+            }
+        }
+        for &l in &self.spec.final_labels {
+            if topology::straddles(grid, &self.region, self.walls, l) {
+                return Err(Reject::Straddles(l));
+            }
+            if let Some(mw) = self.opts.min_width {
+                if !topology::min_width_ok(grid, &self.region, l, mw) {
+                    return Err(Reject::TooNarrow(l));
+                }
+            }
+        }
+        let contacts = topology::measure_contacts(grid, &self.region, &self.index, self.labels.len());
+        for &(a, b) in &self.spec.required {
+            if contacts.get(&self.index, a, b).1 < self.opts.min_contact {
+                return Err(Reject::Adjacency(a, b));
+            }
+        }
+        Ok(())
+    }
+
+    fn rng(&self, retry: u64, i: u64) -> Xoshiro256PlusPlus {
+        let mut h = self.opts.rng_seed;
+        for v in [self.round, retry, i] {
+            h = splitmix(h ^ splitmix(v));
+        }
+        Xoshiro256PlusPlus::seed_from_u64(h)
+    }
+
+    /// Run `count` candidates in parallel; seeds come from `seeder`. Returns the best survivor.
+    fn batch<F>(&self, retry: u64, count: usize, rejected: &mut BTreeMap<String, usize>, seeder: F) -> Option<(f64, usize, Grid, Vec<RoomFeatures>)>
+    where
+        F: Fn(usize, &mut Xoshiro256PlusPlus) -> Option<Vec<usize>> + Sync,
+    {
+        let cells = self.base.cells.len();
+        let results: Vec<Result<(f64, Grid, Vec<RoomFeatures>), Reject>> = (0..count)
+            .into_par_iter()
+            .map_init(
+                || Scratch::new(cells),
+                |s, i| {
+                    let mut rng = self.rng(retry, i as u64);
+                    match seeder(i, &mut rng) {
+                        Some(seeds) => self.candidate(&seeds, &mut rng, s),
+                        None => Err(Reject::Unfilled),
+                    }
+                },
+            )
+            .collect();
+        let mut best: Option<(f64, usize, Grid, Vec<RoomFeatures>)> = None;
+        for (i, r) in results.into_iter().enumerate() {
+            match r {
+                Ok((e, g, f)) => {
+                    if best.as_ref().is_none_or(|b| e < b.0) {
+                        best = Some((e, i, g, f));
+                    }
+                }
+                Err(why) => *rejected.entry(why.describe(&self.spec.names)).or_insert(0) += 1,
+            }
+        }
+        best
+    }
+}
+
+/// Run the cutting node on one round.
+pub fn cut(grid: &Grid, walls: &Walls, spec: &RoundSpec, opts: &CutOptions, n_labels: usize, round: u64) -> crate::Result<CutOutcome> {
+    let p = Prepared::new(grid, walls, spec, opts, n_labels, round);
+    let mut rejected = BTreeMap::new();
+    let mut candidates = 0;
+    let finish = |best: (f64, usize, Grid, Vec<RoomFeatures>), retry: Option<usize>, candidates: usize, rejected: BTreeMap<String, usize>| {
+        let (energy, _, grid, feats) = best;
+        CutOutcome {
+            grid,
+            retry,
+            fallback: retry.is_none(),
+            candidates,
+            rejected,
+            features: p.labels.iter().copied().zip(feats).collect(),
+            energy,
+        }
+    };
+    for j in 0..opts.retries.max(1) {
+        let radii = p.radii(j);
+        let best = p.batch(j as u64, opts.batch.max(1), &mut rejected, |i, rng| {
+            // the first candidate of the first retry keeps the planned seeds unperturbed
+            if j == 0 && i == 0 {
+                p.sample_seeds(rng, None)
+            } else {
+                p.sample_seeds(rng, Some(&radii))
+            }
+        });
+        candidates += opts.batch.max(1);
+        if let Some(b) = best {
+            return Ok(finish(b, Some(j), candidates, rejected));
+        }
+    }
+    // Monte Carlo fallback, in batches so memory stays bounded
+    let mut done = 0;
+    let mut retry_tag = opts.retries as u64;
+    while done < opts.fallback_samples {
+        let count = opts.batch.max(1).min(opts.fallback_samples - done);
+        let best = p.batch(retry_tag, count, &mut rejected, |_, rng| p.sample_fallback_seeds(rng));
+        candidates += count;
+        done += count;
+        retry_tag += 1;
+        if let Some(b) = best {
+            return Ok(finish(b, None, candidates, rejected));
+        }
+    }
+    let children: Vec<&str> = spec.growers.iter().map(|g| spec.names[g.label as usize].as_str()).collect();
+    let reasons: Vec<String> = {
+        let mut v: Vec<(&String, &usize)> = rejected.iter().collect();
+        v.sort_by(|a, b| b.1.cmp(a.1));
+        v.iter().take(4).map(|(r, n)| format!("{n} × {r}")).collect()
+    };
+    Err(crate::CoreError::Infeasible(format!(
+        "cutting '{}' into {:?}: {} retries × {} candidates and {} Monte Carlo candidates were all rejected ({})",
+        spec.names[spec.parent as usize],
+        children,
+        opts.retries,
+        opts.batch,
+        opts.fallback_samples,
+        reasons.join("; ")
+    )))
+}
+
+#[inline]
+fn centre(c: usize, w: usize) -> [f64; 2] {
+    [(c % w) as f64 + 0.5, (c / w) as f64 + 0.5]
+}
+
+#[inline]
+fn dist2(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)
+}
+
+/// SplitMix64: spreads structured inputs (round, retry, index) into independent RNG seeds.
+#[inline]
+pub fn splitmix(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// Grow and clean `batch` candidates of one region without the topology filter or the score: the
+/// growth stage on its own, as the Python benchmark compares it with a numpy reference.
+///
+/// `grid` is a padded solver grid; the cells labelled `region` are cut into `targets.len()` new
+/// rooms labelled `first_label..`, seeded around `seeds` (padded grid units) within `radius` cells;
+/// the leftover stays `region`.
+pub fn grow_batch(grid: &Grid, region: Label, first_label: Label, seeds: &[[f64; 2]], targets: &[f64], batch: usize, rng_seed: u64, radius: f64) -> Vec<Grid> {
+    let walls = Walls::none(grid.w, grid.h);
+    let cells = grid.cells.iter().filter(|&&c| c == region).count() as f64;
+    let growers: Vec<Grower> = targets
+        .iter()
+        .enumerate()
+        .map(|(k, &t)| Grower { label: first_label + k as Label, target: t })
+        .collect();
+    let n_labels = first_label as usize + targets.len();
+    let spec = RoundSpec {
+        parent: region,
+        growers,
+        planned: seeds.to_vec(),
+        remainder: Some((region, (cells - targets.iter().sum::<f64>()).max(1.0))),
+        final_labels: vec![],
+        required: vec![],
+        names: vec![String::new(); n_labels],
+    };
+    let opts = CutOptions { rng_seed, r_base: radius, k: 0.0, gammas: vec![1.0], ..CutOptions::default() };
+    let p = Prepared::new(grid, &walls, &spec, &opts, n_labels, 0);
+    let radii = p.radii(0);
+    let n = grid.cells.len();
+    (0..batch)
+        .into_par_iter()
+        .map_init(
+            || Scratch::new(n),
+            |s, i| {
+                let mut rng = p.rng(0, i as u64);
+                let mut g = p.base.clone();
+                if let Some(seeds) = p.sample_seeds(&mut rng, Some(&radii)) {
+                    growth::grow(&mut g, &walls, &spec.growers, &seeds, &mut rng);
+                    cleanup::assign_remainder(&mut g, &p.region, &walls, region, s);
+                    cleanup::clean(&mut g, &p.region, &walls, s);
+                }
+                g
+            },
+        )
+        .collect()
+}

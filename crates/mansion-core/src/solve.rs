@@ -1,0 +1,760 @@
+//! The single-floor topology-driven solver (paper, Algorithm "single-floor solver"):
+//! SelectHubNode, BuildCutRounds (BFS from the hub), InitLayout, then the cutting node per round,
+//! and finally the vector layout.
+
+use crate::cut::{self, CutOptions, RoundSpec};
+use crate::energy::{RoomFeatures, Weights};
+use crate::error::{CoreError, Result};
+use crate::grid::{Grid, GridFrame, Label, Walls, EMPTY, MAX_ROOMS, OUTSIDE};
+use crate::growth::Grower;
+use crate::raster::{self, FootprintSpec};
+use crate::region::{pad, unpad, Region};
+use crate::seedplan::{validate_plan, ChildInfo, SeedPlanner, SeedRequest};
+use crate::vectorise;
+use serde::{Deserialize, Serialize};
+use std::collections::{BTreeMap, BTreeSet, HashMap, VecDeque};
+use std::time::Instant;
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct NodeSpec {
+    pub id: String,
+    #[serde(rename = "type")]
+    pub kind: String,
+    #[serde(default)]
+    pub area: f64,
+    #[serde(default)]
+    pub room_type: Option<String>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EdgeSpec {
+    pub source: String,
+    pub target: String,
+    #[serde(default = "access")]
+    pub kind: String,
+}
+
+fn access() -> String {
+    "access".into()
+}
+
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct GraphSpec {
+    pub nodes: Vec<NodeSpec>,
+    #[serde(default)]
+    pub edges: Vec<EdgeSpec>,
+}
+
+/// Options of `solve_floor`; defaults mirror the Python API's.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+#[serde(default)]
+pub struct SolveOptions {
+    pub cell_size: f64,
+    pub retries: usize,
+    pub batch: usize,
+    /// Metres of shared wall for an edge to count as realised.
+    pub min_contact: f64,
+    pub hierarchical: bool,
+    pub rng_seed: u64,
+    pub weights: Weights,
+    pub k: f64,
+    pub r_base: f64,
+    pub gammas: Vec<f64>,
+    pub seed_separation: f64,
+    pub fallback_samples: usize,
+    pub min_width: Option<usize>,
+}
+
+impl Default for SolveOptions {
+    fn default() -> Self {
+        let c = CutOptions::default();
+        SolveOptions {
+            cell_size: 0.5,
+            retries: c.retries,
+            batch: c.batch,
+            min_contact: 1.0,
+            hierarchical: true,
+            rng_seed: 0,
+            weights: c.weights,
+            k: c.k,
+            r_base: c.r_base,
+            gammas: c.gammas,
+            seed_separation: c.seed_separation,
+            fallback_samples: c.fallback_samples,
+            min_width: None,
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RoomOut {
+    pub id: String,
+    pub room_type: String,
+    #[serde(rename = "type")]
+    pub kind: String,
+    pub polygon: Vec<[f64; 2]>,
+    pub holes: Vec<Vec<[f64; 2]>>,
+    pub area: f64,
+    pub target_area: f64,
+    pub centroid: [f64; 2],
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct GridOut {
+    pub origin: [f64; 2],
+    pub cell_size: f64,
+    pub cols: usize,
+    pub rows: usize,
+    pub ids: Vec<String>,
+    /// Row 0 is the bottom row; −1 is outside the free region.
+    pub labels: Vec<Vec<i32>>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct AdjacencyOut {
+    pub a: String,
+    pub b: String,
+    /// Metres of shared wall.
+    pub contact: f64,
+    /// Metres of the longest straight shared segment.
+    pub longest: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RoomEnergy {
+    pub ratio: f64,
+    pub seed: f64,
+    pub wall: f64,
+    pub corner: f64,
+    pub energy: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EnergyOut {
+    pub total: f64,
+    pub rooms: BTreeMap<String, RoomEnergy>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RoundOut {
+    pub parent: String,
+    pub children: Vec<String>,
+    pub retry: Option<usize>,
+    pub fallback: bool,
+    pub candidates: usize,
+    pub rejected: BTreeMap<String, usize>,
+    pub energy: EnergyOut,
+    pub seconds: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Diagnostics {
+    pub rounds: Vec<RoundOut>,
+    pub fallback_used: bool,
+    pub seconds: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Solution {
+    pub rooms: Vec<RoomOut>,
+    pub grid: GridOut,
+    pub adjacencies: Vec<AdjacencyOut>,
+    pub diagnostics: Diagnostics,
+}
+
+const ROLES: [&str; 5] = ["main", "Entities", "area", "elevator", "stair"];
+
+fn is_core(kind: &str) -> bool {
+    kind == "elevator" || kind == "stair"
+}
+
+/// A floor ready to solve: labels, the padded grid with cores placed, the walls, the graph as
+/// label pairs.
+pub struct Floor {
+    pub frame: GridFrame,
+    /// Padded solver grid: free cells `EMPTY`, cores labelled, the rest `OUTSIDE`.
+    pub grid: Grid,
+    pub walls: Walls,
+    pub names: Vec<String>,
+    pub kinds: Vec<String>,
+    pub room_types: Vec<String>,
+    /// Requested area of each label in m² (core boxes for cores).
+    pub areas: Vec<f64>,
+    pub hub: Label,
+    /// Undirected graph edges between labels, deduplicated, `a < b`.
+    pub edges: Vec<(Label, Label)>,
+}
+
+impl Floor {
+    pub fn is_core(&self, l: Label) -> bool {
+        is_core(&self.kinds[l as usize])
+    }
+
+    fn neighbours(&self, l: Label) -> impl Iterator<Item = Label> + '_ {
+        self.edges.iter().filter_map(move |&(a, b)| {
+            if a == l {
+                Some(b)
+            } else if b == l {
+                Some(a)
+            } else {
+                None
+            }
+        })
+    }
+}
+
+/// Validate the graph against the footprint and build the floor.
+pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Result<Floor> {
+    let invalid = |m: String| Err(CoreError::InvalidInput(m));
+    if !(opts.cell_size.is_finite() && opts.cell_size > 0.0) {
+        return invalid(format!("cell_size must be a positive number of metres, got {}", opts.cell_size));
+    }
+    if !(opts.min_contact.is_finite() && opts.min_contact >= 0.0) {
+        return invalid(format!("min_contact must be ≥ 0 metres, got {}", opts.min_contact));
+    }
+    if graph.nodes.is_empty() {
+        return invalid("the room graph has no nodes".into());
+    }
+    if graph.nodes.len() + fp.cores.len() > MAX_ROOMS {
+        return invalid(format!("too many rooms ({})", graph.nodes.len()));
+    }
+    let mut ids: HashMap<&str, usize> = HashMap::new();
+    for (i, n) in graph.nodes.iter().enumerate() {
+        if n.id.is_empty() {
+            return invalid(format!("node {i} has an empty id"));
+        }
+        if ids.insert(n.id.as_str(), i).is_some() {
+            return invalid(format!("duplicate room id '{}'", n.id));
+        }
+        if !ROLES.contains(&n.kind.as_str()) {
+            return invalid(format!("room '{}' has type '{}', expected one of {:?}", n.id, n.kind, ROLES));
+        }
+        if !is_core(&n.kind) && !(n.area.is_finite() && n.area > 0.0) {
+            return invalid(format!("room '{}' has area {} m²; areas must be positive", n.id, n.area));
+        }
+    }
+    let mains: Vec<&str> = graph.nodes.iter().filter(|n| n.kind == "main").map(|n| n.id.as_str()).collect();
+    if mains.len() != 1 {
+        return invalid(format!("the graph needs exactly one 'main' node (the hub), found {}: {:?}", mains.len(), mains));
+    }
+    let mut edges = BTreeSet::new();
+    for e in &graph.edges {
+        let (Some(&a), Some(&b)) = (ids.get(e.source.as_str()), ids.get(e.target.as_str())) else {
+            let unknown = if ids.contains_key(e.source.as_str()) { &e.target } else { &e.source };
+            return invalid(format!("edge {} – {} refers to unknown room '{}'", e.source, e.target, unknown));
+        };
+        if a == b {
+            return invalid(format!("edge {} – {} joins a room to itself", e.source, e.target));
+        }
+        if e.kind != "access" && e.kind != "adjacent" {
+            return invalid(format!("edge {} – {} has kind '{}', expected access or adjacent", e.source, e.target, e.kind));
+        }
+        edges.insert((a.min(b) as Label, a.max(b) as Label));
+    }
+
+    let raster = raster::rasterise(fp, opts.cell_size)?;
+    let mut names: Vec<String> = graph.nodes.iter().map(|n| n.id.clone()).collect();
+    let mut kinds: Vec<String> = graph.nodes.iter().map(|n| n.kind.clone()).collect();
+    let mut room_types: Vec<String> = graph
+        .nodes
+        .iter()
+        .map(|n| n.room_type.clone().unwrap_or_else(|| n.id.clone()))
+        .collect();
+    let mut areas: Vec<f64> = graph.nodes.iter().map(|n| n.area).collect();
+    let cell_area = opts.cell_size * opts.cell_size;
+    let mut grid = raster.free.clone();
+    for (ci, core) in fp.cores.iter().enumerate() {
+        let label = match ids.get(core.id.as_str()) {
+            Some(&i) => {
+                if graph.nodes[i].kind != core.kind {
+                    return invalid(format!(
+                        "room '{}' is a '{}' node but its footprint core is a '{}'",
+                        core.id, graph.nodes[i].kind, core.kind
+                    ));
+                }
+                i
+            }
+            None => {
+                // a core with no node still occupies its box
+                names.push(core.id.clone());
+                kinds.push(core.kind.clone());
+                room_types.push(core.kind.clone());
+                areas.push(0.0);
+                names.len() - 1
+            }
+        };
+        areas[label] = raster.cores[ci].len() as f64 * cell_area;
+        for &c in &raster.cores[ci] {
+            grid.cells[c] = label as Label;
+        }
+    }
+    for n in &graph.nodes {
+        if is_core(&n.kind) && !fp.cores.iter().any(|c| c.id == n.id) {
+            return invalid(format!("core node '{}' has no box in the footprint's cores", n.id));
+        }
+    }
+    let free_cells = raster.free.cells.iter().filter(|&&c| c == EMPTY).count();
+    let free_area = free_cells as f64 * cell_area;
+    let wanted: f64 = graph.nodes.iter().filter(|n| !is_core(&n.kind)).map(|n| n.area).sum();
+    // Targets are scaled to the region being cut, so small overshoots are absorbed; a program far
+    // larger than the floor is a planning error worth reporting.
+    if wanted > free_area * 1.10 {
+        return invalid(format!(
+            "the rooms need {wanted:.1} m² but the free region is only {free_area:.1} m² (footprint minus cores)"
+        ));
+    }
+    let scale = free_area / wanted.max(1e-9);
+    for n in graph.nodes.iter().filter(|n| !is_core(&n.kind)) {
+        if n.area * scale / cell_area < 2.0 {
+            return invalid(format!(
+                "room '{}' ({:.2} m²) is smaller than two cells at cell_size {} m",
+                n.id, n.area, opts.cell_size
+            ));
+        }
+    }
+    let hub = ids[mains[0]] as Label;
+    // InitLayout: the hub owns the whole free region
+    for c in grid.cells.iter_mut() {
+        if *c == EMPTY {
+            *c = hub;
+        }
+    }
+    let grid = pad(&grid, OUTSIDE);
+    let mut walls = Walls::none(grid.w, grid.h);
+    if raster.walls.any {
+        let (w, h) = (raster.frame.w, raster.frame.h);
+        for y in 0..h {
+            for x in 0..=w {
+                if raster.walls.v[y * (w + 1) + x] {
+                    walls.block_vertical(x + 1, y + 1);
+                }
+            }
+        }
+        for y in 0..=h {
+            for x in 0..w {
+                if raster.walls.hz[y * w + x] {
+                    walls.block_horizontal(x + 1, y + 1);
+                }
+            }
+        }
+    }
+    Ok(Floor {
+        frame: raster.frame,
+        grid,
+        walls,
+        names,
+        kinds,
+        room_types,
+        areas,
+        hub,
+        edges: edges.into_iter().collect(),
+    })
+}
+
+/// BuildCutRounds: BFS from the hub over non-core rooms; each parent with its children at the next
+/// depth is a round. Returns the rounds in BFS order and each label's BFS children.
+pub fn build_rounds(floor: &Floor) -> Result<Vec<(Label, Vec<Label>)>> {
+    let n = floor.names.len();
+    let mut seen = vec![false; n];
+    let mut children: Vec<Vec<Label>> = vec![Vec::new(); n];
+    let mut order = vec![floor.hub];
+    seen[floor.hub as usize] = true;
+    let mut queue = VecDeque::from([floor.hub]);
+    while let Some(p) = queue.pop_front() {
+        for q in floor.neighbours(p) {
+            if !seen[q as usize] && !floor.is_core(q) {
+                seen[q as usize] = true;
+                children[p as usize].push(q);
+                order.push(q);
+                queue.push_back(q);
+            }
+        }
+    }
+    for l in 0..n {
+        if !seen[l] && !floor.is_core(l as Label) {
+            return Err(CoreError::InvalidInput(format!(
+                "room '{}' is not connected to the hub '{}' (cores do not count as connections)",
+                floor.names[l], floor.names[floor.hub as usize]
+            )));
+        }
+    }
+    Ok(order
+        .into_iter()
+        .filter(|&p| !children[p as usize].is_empty())
+        .map(|p| (p, children[p as usize].clone()))
+        .collect())
+}
+
+/// Solve one floor.
+pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, planner: &mut dyn SeedPlanner) -> Result<Solution> {
+    let start = Instant::now();
+    let floor = prepare(graph, fp, opts)?;
+    let n = floor.names.len();
+    let rounds = if opts.hierarchical {
+        build_rounds(&floor)?
+    } else {
+        // flat: every room grows at once over the whole free region (the paper's ablation)
+        build_rounds(&floor)?; // still reject disconnected graphs
+        let others: Vec<Label> = (0..n as Label).filter(|&l| l != floor.hub && !floor.is_core(l)).collect();
+        if others.is_empty() {
+            vec![]
+        } else {
+            vec![(floor.hub, others)]
+        }
+    };
+    // subtree areas: a child's target in a round includes the rooms later cut out of it
+    let mut subtree = floor.areas.clone();
+    for (p, cs) in rounds.iter().rev() {
+        if opts.hierarchical {
+            let s: f64 = cs.iter().map(|&c| subtree[c as usize]).sum();
+            subtree[*p as usize] += s;
+        }
+    }
+    let cut_opts = CutOptions {
+        retries: opts.retries.max(1),
+        batch: opts.batch.max(1),
+        gammas: if opts.gammas.is_empty() { vec![1.0] } else { opts.gammas.clone() },
+        r_base: opts.r_base,
+        k: opts.k,
+        seed_separation: opts.seed_separation,
+        fallback_samples: opts.fallback_samples,
+        min_contact: ((opts.min_contact / opts.cell_size) - 1e-9).ceil().max(1.0) as u32,
+        min_width: opts.min_width,
+        weights: opts.weights,
+        rng_seed: opts.rng_seed,
+    };
+    let mut grid = floor.grid.clone();
+    let mut exists: Vec<bool> = (0..n).map(|l| floor.is_core(l as Label) || l == floor.hub as usize).collect();
+    let has_children: BTreeSet<Label> = rounds.iter().map(|r| r.0).collect();
+    let mut diag = Vec::new();
+    let mut fallback_used = false;
+    for (t, (parent, children)) in rounds.iter().enumerate() {
+        let t0 = Instant::now();
+        let region = Region::of_label(&grid, *parent);
+        // descendants' needs: rooms outside this region that a child or its subtree must touch
+        let attract_of = |c: Label| -> Vec<Label> {
+            let mut out = BTreeSet::new();
+            let mut stack = vec![c];
+            while let Some(x) = stack.pop() {
+                for q in floor.neighbours(x) {
+                    if exists[q as usize] && q != *parent {
+                        out.insert(q);
+                    }
+                }
+                if opts.hierarchical {
+                    if let Some((_, cs)) = rounds.iter().find(|r| r.0 == x) {
+                        stack.extend(cs.iter().copied());
+                    }
+                }
+            }
+            out.into_iter().collect()
+        };
+        let infos: Vec<ChildInfo> = children
+            .iter()
+            .map(|&c| ChildInfo {
+                label: c,
+                id: floor.names[c as usize].clone(),
+                room_type: floor.room_types[c as usize].clone(),
+                target_area: subtree[c as usize],
+                own_area: floor.areas[c as usize],
+                neighbours: floor.neighbours(c).map(|q| floor.names[q as usize].clone()).collect(),
+                attract: attract_of(c),
+            })
+            .collect();
+        let req = SeedRequest {
+            round: t,
+            parent: *parent,
+            parent_id: floor.names[*parent as usize].clone(),
+            parent_neighbours: floor.neighbours(*parent).map(|q| floor.names[q as usize].clone()).collect(),
+            parent_attract: floor.neighbours(*parent).filter(|&q| exists[q as usize]).collect(),
+            children: infos,
+            grid: &grid,
+            frame: &floor.frame,
+            region: &region,
+            names: &floor.names,
+            want_parent_seed: !opts.hierarchical,
+        };
+        let plan = planner.plan(&req)?;
+        validate_plan(&plan, &req)?;
+        let cells = region.len() as f64;
+        let own = floor.areas[*parent as usize];
+        let total: f64 = own + children.iter().map(|&c| subtree[c as usize]).sum::<f64>();
+        let mut growers = Vec::new();
+        let mut planned = Vec::new();
+        let mut used = 0.0;
+        for &c in children {
+            let seed = &plan.seeds[&floor.names[c as usize]];
+            let target = match seed.fraction {
+                Some(f) => f * cells,
+                None => subtree[c as usize] / total * cells,
+            };
+            used += target;
+            growers.push(Grower { label: c, target: target.max(1.0) });
+            planned.push(req.to_solver(seed.centre().unwrap_or_default()));
+        }
+        let parent_target = (cells - used).max(1.0);
+        let remainder = match plan.parent_seed {
+            Some(p) => {
+                growers.push(Grower { label: *parent, target: parent_target });
+                planned.push(req.to_solver(p));
+                None
+            }
+            None => Some((*parent, parent_target)),
+        };
+        for &c in children {
+            exists[c as usize] = true;
+        }
+        let in_round = |l: Label| l == *parent || children.contains(&l);
+        let required: Vec<(Label, Label)> = floor
+            .edges
+            .iter()
+            .copied()
+            .filter(|&(a, b)| exists[a as usize] && exists[b as usize] && (in_round(a) || in_round(b)))
+            .collect();
+        let mut final_labels = vec![*parent];
+        final_labels.extend(children.iter().copied().filter(|c| !opts.hierarchical || !has_children.contains(c)));
+        let spec = RoundSpec {
+            parent: *parent,
+            growers,
+            planned,
+            remainder,
+            final_labels,
+            required,
+            names: floor.names.clone(),
+        };
+        let outcome = cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, t as u64)?;
+        fallback_used |= outcome.fallback;
+        grid = outcome.grid;
+        diag.push(RoundOut {
+            parent: floor.names[*parent as usize].clone(),
+            children: children.iter().map(|&c| floor.names[c as usize].clone()).collect(),
+            retry: outcome.retry,
+            fallback: outcome.fallback,
+            candidates: outcome.candidates,
+            rejected: outcome.rejected,
+            energy: EnergyOut {
+                total: outcome.energy,
+                rooms: outcome
+                    .features
+                    .iter()
+                    .map(|(l, f): &(Label, RoomFeatures)| {
+                        (
+                            floor.names[*l as usize].clone(),
+                            RoomEnergy {
+                                ratio: f.ratio,
+                                seed: f.seed,
+                                wall: f.wall,
+                                corner: f.corner,
+                                energy: f.energy,
+                            },
+                        )
+                    })
+                    .collect(),
+            },
+            seconds: t0.elapsed().as_secs_f64(),
+        });
+    }
+    let mut sol = output(&floor, &grid);
+    sol.diagnostics = Diagnostics {
+        rounds: diag,
+        fallback_used,
+        seconds: start.elapsed().as_secs_f64(),
+    };
+    Ok(sol)
+}
+
+/// Vectorise the final grid and measure the realised adjacencies.
+fn output(floor: &Floor, padded: &Grid) -> Solution {
+    let grid = unpad(padded);
+    let frame = &floor.frame;
+    let cell_area = frame.cell * frame.cell;
+    let polys = vectorise::vectorise(&grid);
+    let n = floor.names.len();
+    let mut count = vec![0usize; n];
+    let mut sum = vec![[0f64; 2]; n];
+    for (i, &l) in grid.cells.iter().enumerate() {
+        if (l as usize) < n {
+            count[l as usize] += 1;
+            let c = frame.centre(i % grid.w, i / grid.w);
+            sum[l as usize][0] += c[0];
+            sum[l as usize][1] += c[1];
+        }
+    }
+    let mut rooms = Vec::new();
+    for l in 0..n {
+        // a realised room is one piece; take its (largest) polygon
+        let Some(p) = polys
+            .iter()
+            .filter(|p| p.label as usize == l)
+            .max_by(|a, b| vectorise::ring_area(&a.outer).total_cmp(&vectorise::ring_area(&b.outer)))
+        else {
+            continue;
+        };
+        rooms.push(RoomOut {
+            id: floor.names[l].clone(),
+            room_type: floor.room_types[l].clone(),
+            kind: floor.kinds[l].clone(),
+            polygon: vectorise::ring_to_plan(&p.outer, frame),
+            holes: p.holes.iter().map(|h| vectorise::ring_to_plan(h, frame)).collect(),
+            area: count[l] as f64 * cell_area,
+            target_area: floor.areas[l],
+            centroid: [sum[l][0] / count[l] as f64, sum[l][1] / count[l] as f64],
+        });
+    }
+    Solution {
+        rooms,
+        grid: GridOut {
+            origin: frame.origin,
+            cell_size: frame.cell,
+            cols: grid.w,
+            rows: grid.h,
+            ids: floor.names.clone(),
+            labels: (0..grid.h)
+                .map(|y| {
+                    (0..grid.w)
+                        .map(|x| {
+                            let l = grid.get(x, y);
+                            if (l as usize) < n {
+                                l as i32
+                            } else {
+                                -1
+                            }
+                        })
+                        .collect()
+                })
+                .collect(),
+        },
+        adjacencies: adjacencies(&grid, &floor.names, frame.cell),
+        diagnostics: Diagnostics {
+            rounds: vec![],
+            fallback_used: false,
+            seconds: 0.0,
+        },
+    }
+}
+
+/// Every pair of rooms sharing a wall, with total and longest straight contact in metres.
+pub fn adjacencies(grid: &Grid, names: &[String], cell: f64) -> Vec<AdjacencyOut> {
+    let n = names.len();
+    let mut acc: BTreeMap<(Label, Label), (u32, u32)> = BTreeMap::new();
+    let mut scan = |pairs: &mut dyn Iterator<Item = Vec<(Label, Label)>>| {
+        for line in pairs {
+            let mut prev: Option<(Label, Label)> = None;
+            let mut run = 0;
+            for (a, b) in line {
+                let key = (a.min(b), a.max(b));
+                if a == b || (a as usize) >= n || (b as usize) >= n {
+                    prev = None;
+                    continue;
+                }
+                run = if prev == Some(key) { run + 1 } else { 1 };
+                prev = Some(key);
+                let e = acc.entry(key).or_insert((0, 0));
+                e.0 += 1;
+                e.1 = e.1.max(run);
+            }
+        }
+    };
+    let (w, h) = (grid.w, grid.h);
+    scan(&mut (0..h.saturating_sub(1)).map(|y| (0..w).map(|x| (grid.get(x, y), grid.get(x, y + 1))).collect()));
+    scan(&mut (0..w.saturating_sub(1)).map(|x| (0..h).map(|y| (grid.get(x, y), grid.get(x + 1, y))).collect()));
+    acc.into_iter()
+        .map(|((a, b), (t, l))| AdjacencyOut {
+            a: names[a as usize].clone(),
+            b: names[b as usize].clone(),
+            contact: t as f64 * cell,
+            longest: l as f64 * cell,
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::CoreSpec;
+    use crate::seedplan::HeuristicPlanner;
+
+    fn node(id: &str, kind: &str, area: f64) -> NodeSpec {
+        NodeSpec { id: id.into(), kind: kind.into(), area, room_type: None }
+    }
+
+    fn edge(a: &str, b: &str) -> EdgeSpec {
+        EdgeSpec { source: a.into(), target: b.into(), kind: "access".into() }
+    }
+
+    pub(crate) fn apartment() -> (GraphSpec, FootprintSpec) {
+        let graph = GraphSpec {
+            nodes: vec![
+                node("living", "main", 30.0),
+                node("kitchen", "area", 12.0),
+                node("bed1", "area", 14.0),
+                node("bed2", "area", 11.0),
+                node("bath", "area", 6.0),
+                node("hall", "area", 8.0),
+                node("stair", "stair", 0.0),
+            ],
+            edges: vec![
+                edge("living", "kitchen"),
+                edge("living", "hall"),
+                edge("hall", "bed1"),
+                edge("hall", "bed2"),
+                edge("hall", "bath"),
+                edge("living", "stair"),
+            ],
+        };
+        let fp = FootprintSpec {
+            polygon: vec![[0.0, 0.0], [12.0, 0.0], [12.0, 8.0], [0.0, 8.0]],
+            cores: vec![CoreSpec { id: "stair".into(), kind: "stair".into(), x: [0.0, 3.0], y: [0.0, 2.0] }],
+            ..Default::default()
+        };
+        (graph, fp)
+    }
+
+    #[test]
+    fn solves_an_apartment_with_every_edge_realised() {
+        let (graph, fp) = apartment();
+        let opts = SolveOptions::default();
+        let sol = solve_floor(&graph, &fp, &opts, &mut HeuristicPlanner).unwrap();
+        assert_eq!(sol.rooms.len(), 7);
+        for e in &graph.edges {
+            let adj = sol
+                .adjacencies
+                .iter()
+                .find(|a| (a.a == e.source && a.b == e.target) || (a.a == e.target && a.b == e.source));
+            assert!(adj.is_some_and(|a| a.longest >= 1.0), "edge {}–{} not realised", e.source, e.target);
+        }
+        let total: f64 = sol.rooms.iter().map(|r| r.area).sum();
+        assert!((total - 96.0).abs() < 1e-9);
+        let again = solve_floor(&graph, &fp, &opts, &mut HeuristicPlanner).unwrap();
+        assert_eq!(sol.grid, again.grid);
+    }
+
+    #[test]
+    fn flat_mode_solves_too() {
+        let (graph, fp) = apartment();
+        let opts = SolveOptions { hierarchical: false, ..Default::default() };
+        let sol = solve_floor(&graph, &fp, &opts, &mut HeuristicPlanner).unwrap();
+        assert_eq!(sol.diagnostics.rounds.len(), 1);
+        assert_eq!(sol.rooms.len(), 7);
+    }
+
+    #[test]
+    fn bad_graphs_are_rejected_with_names() {
+        let (mut graph, fp) = apartment();
+        graph.edges.push(edge("bed1", "ghost"));
+        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        assert!(err.to_string().contains("ghost"), "{err}");
+        let (mut graph, fp) = apartment();
+        graph.nodes[1].kind = "main".into();
+        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        assert!(err.to_string().contains("exactly one 'main'"), "{err}");
+        let (mut graph, fp) = apartment();
+        graph.edges.retain(|e| e.target != "kitchen");
+        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        assert!(err.to_string().contains("'kitchen' is not connected"), "{err}");
+        let (mut graph, fp) = apartment();
+        graph.nodes[0].area = 500.0;
+        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        assert!(matches!(err, CoreError::InvalidInput(_)), "{err}");
+    }
+}
