@@ -28,6 +28,9 @@ pub struct RoundSpec {
     pub planned: Vec<[f64; 2]>,
     /// The parent, when it keeps the leftover instead of growing; its target in cells.
     pub remainder: Option<(Label, f64)>,
+    /// Cells kept for the remainder parent before growth (its spine to the rooms it must reach),
+    /// which no child may take.
+    pub reserved: Vec<usize>,
     /// Labels that no later round cuts: fixed walls and minimum width apply to them now.
     pub final_labels: Vec<Label>,
     /// Graph edges to check after this round (both ends exist, one of them in this round), with the
@@ -57,6 +60,9 @@ pub struct CutOptions {
     pub min_width: Option<usize>,
     pub weights: Weights,
     pub rng_seed: u64,
+    /// Run every retry and keep the best survivor overall, instead of stopping at the first retry
+    /// with a survivor (the paper's rule). Costs the whole budget; benchmarks use it.
+    pub exhaustive: bool,
 }
 
 use serde::{Deserialize, Serialize};
@@ -75,6 +81,7 @@ impl Default for CutOptions {
             min_width: None,
             weights: Weights::default(),
             rng_seed: 0,
+            exhaustive: false,
         }
     }
 }
@@ -143,6 +150,11 @@ impl<'a> Prepared<'a> {
         for &c in &region.cells {
             base.cells[c as usize] = EMPTY;
         }
+        if let Some((parent, _)) = spec.remainder {
+            for &c in &spec.reserved {
+                base.cells[c] = parent;
+            }
+        }
         let mut labels: Vec<Label> = spec.growers.iter().map(|g| g.label).collect();
         let mut targets: Vec<f64> = spec.growers.iter().map(|g| g.target).collect();
         let mut seeds: Vec<Option<[f64; 2]>> = spec.planned.iter().map(|&p| Some(p)).collect();
@@ -179,7 +191,7 @@ impl<'a> Prepared<'a> {
             return None;
         }
         let c = y * self.region.w + x;
-        self.region.inside[c].then_some(c)
+        (self.base.cells[c] == EMPTY).then_some(c)
     }
 
     /// The region cell nearest to `p` that is not taken.
@@ -189,7 +201,7 @@ impl<'a> Prepared<'a> {
             .cells
             .iter()
             .map(|&c| c as usize)
-            .filter(|c| !taken.contains(c))
+            .filter(|&c| self.base.cells[c] == EMPTY && !taken.contains(&c))
             .min_by(|&a, &b| {
                 let da = dist2(centre(a, w), p);
                 let db = dist2(centre(b, w), p);
@@ -243,7 +255,7 @@ impl<'a> Prepared<'a> {
             let mut best: Option<(f64, usize)> = None;
             for _ in 0..8 {
                 let c = self.region.cells[rng.random_range(0..self.region.len())] as usize;
-                if placed.iter().any(|&o| seeds[o] == c) {
+                if self.base.cells[c] != EMPTY || placed.iter().any(|&o| seeds[o] == c) {
                     continue;
                 }
                 let rk = self.spec.growers[k].target.sqrt();
@@ -371,6 +383,7 @@ pub fn cut(grid: &Grid, walls: &Walls, spec: &RoundSpec, opts: &CutOptions, n_la
             energy,
         }
     };
+    let mut kept: Option<((f64, usize, Grid, Vec<RoomFeatures>), usize)> = None;
     for j in 0..opts.retries.max(1) {
         let radii = p.radii(j);
         let best = p.batch(j as u64, opts.batch.max(1), &mut rejected, |i, rng| {
@@ -383,8 +396,16 @@ pub fn cut(grid: &Grid, walls: &Walls, spec: &RoundSpec, opts: &CutOptions, n_la
         });
         candidates += opts.batch.max(1);
         if let Some(b) = best {
-            return Ok(finish(b, Some(j), candidates, rejected));
+            if !opts.exhaustive {
+                return Ok(finish(b, Some(j), candidates, rejected));
+            }
+            if kept.as_ref().is_none_or(|(k, _)| b.0 < k.0) {
+                kept = Some((b, j));
+            }
         }
+    }
+    if let Some((b, j)) = kept {
+        return Ok(finish(b, Some(j), candidates, rejected));
     }
     // Monte Carlo fallback, in batches so memory stays bounded
     let mut done = 0;
@@ -457,6 +478,7 @@ pub fn grow_batch(grid: &Grid, region: Label, first_label: Label, seeds: &[[f64;
         remainder: Some((region, (cells - targets.iter().sum::<f64>()).max(1.0))),
         final_labels: vec![],
         required: vec![],
+        reserved: vec![],
         names: vec![String::new(); n_labels],
     };
     let opts = CutOptions { rng_seed, r_base: radius, k: 0.0, gammas: vec![1.0], ..CutOptions::default() };

@@ -22,6 +22,8 @@ pub struct ChildInfo {
     pub neighbours: Vec<String>,
     /// Labels outside the region this child (or a room later cut out of it) must touch.
     pub attract: Vec<Label>,
+    /// Whether the graph joins this child to its parent.
+    pub touches_parent: bool,
 }
 
 /// Everything a planner may look at for one round.
@@ -38,6 +40,8 @@ pub struct SeedRequest<'a> {
     /// Frame of the unpadded grid.
     pub frame: &'a GridFrame,
     pub region: &'a Region,
+    /// Cells the solver keeps for the parent (its spine), which children cannot take.
+    pub reserved: &'a [usize],
     /// Names of every label.
     pub names: &'a [String],
     /// Whether the parent should get a seed of its own and grow with its children.
@@ -173,6 +177,8 @@ impl SeedPlanner for HeuristicPlanner {
             exterior
         };
         let d_env = bfs(region, &envelope_sources);
+        // children that open onto the parent should hug its spine without sitting on it
+        let d_spine = (!req.reserved.is_empty()).then(|| bfs(region, req.reserved));
         let mut fields: HashMap<Label, Vec<u32>> = HashMap::new();
         let mut field = |l: Label| -> Vec<u32> {
             fields
@@ -226,6 +232,12 @@ impl SeedPlanner for HeuristicPlanner {
                 // keep half a room from the region's envelope at least, so the room has space
                 if de + 0.5 < inset.min(2.0) {
                     cost += 1.0;
+                }
+                if let Some(ds) = &d_spine {
+                    if child.touches_parent {
+                        let d = ds[pos] as f64;
+                        cost += (d - inset).max(0.0) / side + 2.0 * (inset - d).max(0.0) / side;
+                    }
                 }
                 for f in &avoid {
                     let d = f[pos] as f64;

@@ -63,6 +63,8 @@ pub struct SolveOptions {
     pub seed_separation: f64,
     pub fallback_samples: usize,
     pub min_width: Option<usize>,
+    /// See [`CutOptions::exhaustive`].
+    pub exhaustive: bool,
 }
 
 impl Default for SolveOptions {
@@ -82,6 +84,7 @@ impl Default for SolveOptions {
             seed_separation: c.seed_separation,
             fallback_samples: c.fallback_samples,
             min_width: None,
+            exhaustive: false,
         }
     }
 }
@@ -385,6 +388,80 @@ pub fn build_rounds(floor: &Floor) -> Result<Vec<(Label, Vec<Label>)>> {
         .collect())
 }
 
+/// The parent's spine for a round where the parent keeps the remainder: a two-cell-wide path from
+/// the deepest cell of the region (farthest from its envelope) to each room outside the region that
+/// the parent must touch. Children cannot take it, so the parent stays connected to what it must
+/// reach (the paper's hub reaching every core) whatever the children do.
+pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
+    let w = region.w;
+    if region.is_empty() {
+        return vec![];
+    }
+    let n = region.inside.len();
+    // distance to the envelope, to find the deepest cell
+    let mut depth = vec![u32::MAX; n];
+    let mut queue = VecDeque::new();
+    for &c in &region.cells {
+        if region.on_envelope(c as usize) {
+            depth[c as usize] = 0;
+            queue.push_back(c as usize);
+        }
+    }
+    while let Some(c) = queue.pop_front() {
+        for nb in [c - 1, c + 1, c - w, c + w] {
+            if region.inside[nb] && depth[nb] == u32::MAX {
+                depth[nb] = depth[c] + 1;
+                queue.push_back(nb);
+            }
+        }
+    }
+    let centre = region
+        .cells
+        .iter()
+        .map(|&c| c as usize)
+        .max_by(|&a, &b| depth[a].cmp(&depth[b]).then(b.cmp(&a)))
+        .unwrap_or(region.cells[0] as usize);
+    // breadth-first tree from the centre; each target is reached along its tree path
+    let mut prev = vec![usize::MAX; n];
+    prev[centre] = centre;
+    queue.clear();
+    queue.push_back(centre);
+    let mut order = Vec::new();
+    while let Some(c) = queue.pop_front() {
+        order.push(c);
+        for nb in [c - 1, c + 1, c - w, c + w] {
+            if region.inside[nb] && prev[nb] == usize::MAX {
+                prev[nb] = c;
+                queue.push_back(nb);
+            }
+        }
+    }
+    let mut path = vec![centre];
+    for &t in targets {
+        let touches = |c: usize| [c - 1, c + 1, c - w, c + w].iter().any(|&nb| grid.cells[nb] == t);
+        if let Some(&end) = order.iter().find(|&&c| touches(c)) {
+            let mut c = end;
+            while c != centre {
+                path.push(c);
+                c = prev[c];
+            }
+        }
+    }
+    let mut out: Vec<usize> = Vec::with_capacity(path.len() * 2);
+    for &c in &path {
+        out.push(c);
+        // widen to two cells so spur removal cannot eat the spine
+        for nb in [c + 1, c + w] {
+            if region.inside[nb] {
+                out.push(nb);
+            }
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
 /// Solve one floor.
 pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, planner: &mut dyn SeedPlanner) -> Result<Solution> {
     let start = Instant::now();
@@ -422,6 +499,7 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
         min_width: opts.min_width,
         weights: opts.weights,
         rng_seed: opts.rng_seed,
+        exhaustive: opts.exhaustive,
     };
     let mut grid = floor.grid.clone();
     let mut exists: Vec<bool> = (0..n).map(|l| floor.is_core(l as Label) || l == floor.hub as usize).collect();
@@ -459,18 +537,22 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
                 own_area: floor.areas[c as usize],
                 neighbours: floor.neighbours(c).map(|q| floor.names[q as usize].clone()).collect(),
                 attract: attract_of(c),
+                touches_parent: floor.neighbours(c).any(|q| q == *parent),
             })
             .collect();
+        let parent_attract: Vec<Label> = floor.neighbours(*parent).filter(|&q| exists[q as usize]).collect();
+        let reserved = if opts.hierarchical { spine(&region, &grid, &parent_attract) } else { vec![] };
         let req = SeedRequest {
             round: t,
             parent: *parent,
             parent_id: floor.names[*parent as usize].clone(),
             parent_neighbours: floor.neighbours(*parent).map(|q| floor.names[q as usize].clone()).collect(),
-            parent_attract: floor.neighbours(*parent).filter(|&q| exists[q as usize]).collect(),
+            parent_attract,
             children: infos,
             grid: &grid,
             frame: &floor.frame,
             region: &region,
+            reserved: &reserved,
             names: &floor.names,
             want_parent_seed: !opts.hierarchical,
         };
@@ -520,6 +602,7 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
             remainder,
             final_labels,
             required,
+            reserved: if remainder.is_some() { reserved.clone() } else { vec![] },
             names: floor.names.clone(),
         };
         let outcome = cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, t as u64)?;
