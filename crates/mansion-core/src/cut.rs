@@ -298,10 +298,11 @@ impl<'a> Prepared<'a> {
 
     /// The topology filter.
     pub fn check(&self, grid: &Grid, s: &mut Scratch) -> Result<(), Reject> {
-        for &l in &self.labels {
-            match topology::pieces(grid, &self.region, l, s) {
-                (0, _) => return Err(Reject::Missing(l)),
-                (1, _) => {}
+        let pieces = topology::pieces_all(grid, &self.region, &self.index, self.labels.len(), s);
+        for (&l, &n) in self.labels.iter().zip(&pieces) {
+            match n {
+                0 => return Err(Reject::Missing(l)),
+                1 => {}
                 _ => return Err(Reject::Disconnected(l)),
             }
         }

@@ -49,6 +49,105 @@ fn wall_ok(grid: &Grid, walls: &Walls, c: usize, label: Label) -> bool {
         .all(|&n| grid.cells[n] != label || !walls.blocked(c, n))
 }
 
+/// A bit per cell, kept both row-major and column-major so that every line test of the growth
+/// phases (a whole side free? which cells beside a room are free?) is a few word operations
+/// instead of a loop over cells. This is what keeps a 64×64 candidate in tens of microseconds.
+#[derive(Clone)]
+struct Bits {
+    wr: usize,
+    wc: usize,
+    rows: Vec<u64>,
+    cols: Vec<u64>,
+}
+
+impl Bits {
+    fn new(w: usize, h: usize) -> Self {
+        let (wr, wc) = (w.div_ceil(64), h.div_ceil(64));
+        Bits {
+            wr,
+            wc,
+            rows: vec![0; wr * h],
+            cols: vec![0; wc * w],
+        }
+    }
+
+    #[inline]
+    fn set(&mut self, x: usize, y: usize) {
+        self.rows[y * self.wr + x / 64] |= 1 << (x % 64);
+        self.cols[x * self.wc + y / 64] |= 1 << (y % 64);
+    }
+
+    #[inline]
+    fn clear(&mut self, x: usize, y: usize) {
+        self.rows[y * self.wr + x / 64] &= !(1 << (x % 64));
+        self.cols[x * self.wc + y / 64] &= !(1 << (y % 64));
+    }
+
+    #[inline]
+    fn row(&self, y: usize) -> &[u64] {
+        &self.rows[y * self.wr..(y + 1) * self.wr]
+    }
+
+    #[inline]
+    fn col(&self, x: usize) -> &[u64] {
+        &self.cols[x * self.wc..(x + 1) * self.wc]
+    }
+}
+
+/// Mask of bits `a..=b` within word `i`.
+#[inline]
+fn word_mask(i: usize, a: usize, b: usize) -> u64 {
+    let lo = a.max(i * 64) - i * 64;
+    let hi = b.min(i * 64 + 63) - i * 64;
+    (u64::MAX >> (63 - hi)) & (u64::MAX << lo)
+}
+
+/// Are bits `a..=b` all set? (`a > b` is an empty range: true.)
+#[inline]
+fn all_set(words: &[u64], a: usize, b: usize) -> bool {
+    a > b || (a / 64..=b / 64).all(|i| {
+        let m = word_mask(i, a, b);
+        words[i] & m == m
+    })
+}
+
+/// Are bits `a..=b` all clear?
+#[inline]
+fn none_set(words: &[u64], a: usize, b: usize) -> bool {
+    a > b || (a / 64..=b / 64).all(|i| words[i] & word_mask(i, a, b) == 0)
+}
+
+/// Fixed walls as bits: `v` has the vertical edge left of cell (x, y) at (x, y) on a `(w + 1) × h`
+/// grid, `h` the horizontal edge below cell (x, y) on a `w × (h + 1)` grid.
+struct WallBits {
+    v: Bits,
+    h: Bits,
+}
+
+impl WallBits {
+    fn new(walls: &Walls, w: usize, h: usize) -> Self {
+        let mut v = Bits::new(w + 1, h);
+        let mut hz = Bits::new(w, h + 1);
+        if walls.any {
+            for y in 0..h {
+                for x in 0..=w {
+                    if walls.v[y * (w + 1) + x] {
+                        v.set(x, y);
+                    }
+                }
+            }
+            for y in 0..=h {
+                for x in 0..w {
+                    if walls.hz[y * w + x] {
+                        hz.set(x, y);
+                    }
+                }
+            }
+        }
+        WallBits { v, h: hz }
+    }
+}
+
 /// Grow every room from its seed cell. `seeds[k]` is the flat index of grower `k`'s seed, which must
 /// be an `EMPTY` cell; seeds must be distinct. Returns each grower's area in cells.
 pub fn grow<R: Rng>(
@@ -58,15 +157,30 @@ pub fn grow<R: Rng>(
     seeds: &[usize],
     rng: &mut R,
 ) -> Vec<usize> {
-    let w = grid.w;
+    let (w, h) = (grid.w, grid.h);
     let n = growers.len();
+    let mut free = Bits::new(w, h);
+    for (y, row) in grid.cells.chunks_exact(w).enumerate() {
+        for (x, &c) in row.iter().enumerate() {
+            if c == EMPTY {
+                free.set(x, y);
+            }
+        }
+    }
+    let wb = walls.any.then(|| WallBits::new(walls, w, h));
+    let mut rooms: Vec<Bits> = vec![Bits::new(w, h); n];
     let mut area = vec![0usize; n];
     // Inclusive bounding boxes (x0, y0, x1, y1); during the rectangular phase they are the rooms.
     let mut bbox = vec![(0usize, 0usize, 0usize, 0usize); n];
+    let take = |grid: &mut Grid, free: &mut Bits, room: &mut Bits, label: Label, x: usize, y: usize| {
+        grid.cells[y * w + x] = label;
+        free.clear(x, y);
+        room.set(x, y);
+    };
     for k in 0..n {
         let s = seeds[k];
         debug_assert_eq!(grid.cells[s], EMPTY);
-        grid.cells[s] = growers[k].label;
+        take(grid, &mut free, &mut rooms[k], growers[k].label, s % w, s / w);
         area[k] = 1;
         bbox[k] = (s % w, s / w, s % w, s / w);
     }
@@ -77,16 +191,31 @@ pub fn grow<R: Rng>(
     while !active.is_empty() {
         let pos = pick_weighted(rng, growers, &active);
         let k = active[pos];
-        let label = growers[k].label;
         let (x0, y0, x1, y1) = bbox[k];
         sides.clear();
-        // side 0: left, 1: right, 2: down, 3: up
         for side in 0u8..4 {
+            // side 0: left, 1: right, 2: down, 3: up
             let (len, ok) = match side {
-                0 => (y1 - y0 + 1, line_free(grid, walls, (x0 - 1, y0), (0, 1), y1 - y0 + 1, 1)),
-                1 => (y1 - y0 + 1, line_free(grid, walls, (x1 + 1, y0), (0, 1), y1 - y0 + 1, -1)),
-                2 => (x1 - x0 + 1, line_free(grid, walls, (x0, y0 - 1), (1, 0), x1 - x0 + 1, w as isize)),
-                _ => (x1 - x0 + 1, line_free(grid, walls, (x0, y1 + 1), (1, 0), x1 - x0 + 1, -(w as isize))),
+                0 => (
+                    y1 - y0 + 1,
+                    all_set(free.col(x0 - 1), y0, y1)
+                        && wb.as_ref().is_none_or(|b| none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)),
+                ),
+                1 => (
+                    y1 - y0 + 1,
+                    all_set(free.col(x1 + 1), y0, y1)
+                        && wb.as_ref().is_none_or(|b| none_set(b.v.col(x1 + 1), y0, y1) && none_set(b.h.col(x1 + 1), y0 + 1, y1)),
+                ),
+                2 => (
+                    x1 - x0 + 1,
+                    all_set(free.row(y0 - 1), x0, x1)
+                        && wb.as_ref().is_none_or(|b| none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)),
+                ),
+                _ => (
+                    x1 - x0 + 1,
+                    all_set(free.row(y1 + 1), x0, x1)
+                        && wb.as_ref().is_none_or(|b| none_set(b.h.row(y1 + 1), x0, x1) && none_set(b.v.row(y1 + 1), x0 + 1, x1)),
+                ),
             };
             if ok && within_cap(area[k], len, growers[k].target) {
                 sides.push((len, side));
@@ -97,8 +226,9 @@ pub fn grow<R: Rng>(
             continue;
         }
         let best = sides.iter().map(|s| s.0).max().unwrap_or(0);
-        let ties: Vec<u8> = sides.iter().filter(|s| s.0 == best).map(|s| s.1).collect();
-        let side = ties[rng.random_range(0..ties.len())];
+        let n_ties = sides.iter().filter(|s| s.0 == best).count();
+        let pick = if n_ties > 1 { rng.random_range(0..n_ties) } else { 0 };
+        let side = sides.iter().filter(|s| s.0 == best).nth(pick).map_or(0, |s| s.1);
         let (nx0, ny0, nx1, ny1) = match side {
             0 => (x0 - 1, y0, x0 - 1, y1),
             1 => (x1 + 1, y0, x1 + 1, y1),
@@ -107,7 +237,7 @@ pub fn grow<R: Rng>(
         };
         for y in ny0..=ny1 {
             for x in nx0..=nx1 {
-                grid.cells[y * w + x] = label;
+                take(grid, &mut free, &mut rooms[k], growers[k].label, x, y);
             }
         }
         area[k] += best;
@@ -119,15 +249,17 @@ pub fn grow<R: Rng>(
 
     // --- L-shaped growth: extend by the longest run of free cells beside the room's own cells ---
     let mut active: Vec<usize> = (0..n).filter(|&k| (area[k] as f64) < growers[k].target).collect();
+    let mut scratch = RunScratch::new(free.wr.max(free.wc));
     while !active.is_empty() {
         let pos = pick_weighted(rng, growers, &active);
         let k = active[pos];
         let label = growers[k].label;
-        match best_run(grid, walls, label, bbox[k], rng) {
+        match best_run(grid, walls, wb.as_ref(), &free, &rooms[k], label, bbox[k], &mut scratch, rng) {
             Some(run) if within_cap(area[k], run.len, growers[k].target) => {
                 let step = if run.horizontal { 1 } else { w };
                 for t in 0..run.len {
-                    grid.cells[run.start + t * step] = label;
+                    let c = run.start + t * step;
+                    take(grid, &mut free, &mut rooms[k], label, c % w, c / w);
                 }
                 area[k] += run.len;
                 let (sx, sy) = (run.start % w, run.start / w);
@@ -147,36 +279,6 @@ pub fn grow<R: Rng>(
     area
 }
 
-/// Is the line of `len` cells starting at `start` and stepping by `dir` all free, and can it join
-/// the room on its `back` side (flat offset from a line cell to the room cell behind it) without
-/// straddling a fixed wall?
-#[inline]
-fn line_free(
-    grid: &Grid,
-    walls: &Walls,
-    start: (usize, usize),
-    dir: (usize, usize),
-    len: usize,
-    back: isize,
-) -> bool {
-    let w = grid.w;
-    let s = start.1 * w + start.0;
-    let step = dir.1 * w + dir.0;
-    for t in 0..len {
-        let c = s + t * step;
-        if grid.cells[c] != EMPTY {
-            return false;
-        }
-        if walls.any {
-            let behind = (c as isize + back) as usize;
-            if walls.blocked(c, behind) || (t > 0 && walls.blocked(c, c - step)) {
-                return false;
-            }
-        }
-    }
-    true
-}
-
 /// A run of free cells to add in the L-shaped phase.
 #[derive(Debug, Clone, Copy)]
 struct Run {
@@ -185,96 +287,129 @@ struct Run {
     horizontal: bool,
 }
 
+struct RunScratch {
+    f: Vec<u64>,
+    best: Vec<Run>,
+}
+
+impl RunScratch {
+    fn new(words: usize) -> Self {
+        RunScratch {
+            f: vec![0; words],
+            best: Vec::new(),
+        }
+    }
+}
+
 /// The longest run (at least two cells) of free cells lying directly beyond the room's own cells on
 /// one side; ties broken at random.
+#[allow(clippy::too_many_arguments)]
 fn best_run<R: Rng>(
     grid: &Grid,
     walls: &Walls,
+    wb: Option<&WallBits>,
+    free: &Bits,
+    room: &Bits,
     label: Label,
     bbox: (usize, usize, usize, usize),
+    s: &mut RunScratch,
     rng: &mut R,
 ) -> Option<Run> {
     let w = grid.w;
     let (x0, y0, x1, y1) = bbox;
-    let mut best: Vec<Run> = Vec::new();
+    s.best.clear();
     let mut best_len = 1usize; // runs of one cell only make spurs
-    let consider = |run: Run, best: &mut Vec<Run>, best_len: &mut usize| {
-        if run.len > *best_len {
-            *best_len = run.len;
-            best.clear();
-            best.push(run);
-        } else if run.len == *best_len && *best_len > 1 {
-            best.push(run);
-        }
-    };
-    let frontier = |c: usize, back: usize| -> bool {
-        grid.cells[c] == EMPTY
-            && grid.cells[back] == label
-            && (!walls.any || (!walls.blocked(c, back) && wall_ok(grid, walls, c, label)))
-    };
-    // rows beyond the bottom and top edges of the room's cells
+    // rows beyond the bottom and top of the room's cells: runs along x, split by vertical walls
     for y in y0..=y1 {
-        for (dy, horizontal) in [(-1isize, true), (1, true)] {
-            let fy = (y as isize + dy) as usize;
-            let mut run_start = usize::MAX;
-            let mut run_len = 0usize;
-            for x in x0..=x1 + 1 {
-                let c = fy * w + x;
-                let ok = x <= x1
-                    && frontier(c, y * w + x)
-                    && (run_len == 0 || !walls.blocked(c, c - 1));
-                if ok {
-                    if run_len == 0 {
-                        run_start = c;
-                    }
-                    run_len += 1;
-                } else {
-                    if run_len > 0 {
-                        consider(Run { start: run_start, len: run_len, horizontal }, &mut best, &mut best_len);
-                    }
-                    run_len = 0;
-                    // a cell that failed only because of the wall to its left may start a new run
-                    if x <= x1 && frontier(c, y * w + x) {
-                        run_start = c;
-                        run_len = 1;
-                    }
+        for up in [false, true] {
+            let ty = if up { y + 1 } else { y - 1 };
+            let (rr, fr) = (room.row(y), free.row(ty));
+            for i in 0..free.wr {
+                s.f[i] = rr[i] & fr[i];
+                if let Some(b) = wb {
+                    // the edge between the room cell and the new cell must be open
+                    s.f[i] &= !b.h.row(if up { ty } else { y })[i];
                 }
             }
+            let sep = wb.map(|b| b.v.row(ty));
+            scan_runs(&s.f[..free.wr], sep, |x| ty * w + x, true, grid, walls, label, &mut best_len, &mut s.best);
         }
     }
-    // columns beyond the left and right edges
+    // columns beyond the left and right of the room's cells: runs along y, split by horizontal walls
     for x in x0..=x1 {
-        for dx in [-1isize, 1] {
-            let fx = (x as isize + dx) as usize;
-            let mut run_start = usize::MAX;
-            let mut run_len = 0usize;
-            for y in y0..=y1 + 1 {
-                let c = y * w + fx;
-                let ok = y <= y1
-                    && frontier(c, y * w + x)
-                    && (run_len == 0 || !walls.blocked(c, c - w));
-                if ok {
-                    if run_len == 0 {
-                        run_start = c;
-                    }
-                    run_len += 1;
-                } else {
-                    if run_len > 0 {
-                        consider(Run { start: run_start, len: run_len, horizontal: false }, &mut best, &mut best_len);
-                    }
-                    run_len = 0;
-                    if y <= y1 && frontier(c, y * w + x) {
-                        run_start = c;
-                        run_len = 1;
-                    }
+        for right in [false, true] {
+            let tx = if right { x + 1 } else { x - 1 };
+            let (rc, fc) = (room.col(x), free.col(tx));
+            for i in 0..free.wc {
+                s.f[i] = rc[i] & fc[i];
+                if let Some(b) = wb {
+                    s.f[i] &= !b.v.col(if right { tx } else { x })[i];
                 }
             }
+            let sep = wb.map(|b| b.h.col(tx));
+            scan_runs(&s.f[..free.wc], sep, |y| y * w + tx, false, grid, walls, label, &mut best_len, &mut s.best);
         }
     }
-    if best.is_empty() {
+    if s.best.is_empty() {
         None
     } else {
-        Some(best[rng.random_range(0..best.len())])
+        let i = if s.best.len() > 1 { rng.random_range(0..s.best.len()) } else { 0 };
+        Some(s.best[i])
+    }
+}
+
+/// Walk the set bits of `f` (candidate cells along one line), joining consecutive bits into runs
+/// unless a wall (`sep` bit at the later position) separates them, and keep the longest runs.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn scan_runs(
+    f: &[u64],
+    sep: Option<&[u64]>,
+    cell: impl Fn(usize) -> usize,
+    horizontal: bool,
+    grid: &Grid,
+    walls: &Walls,
+    label: Label,
+    best_len: &mut usize,
+    best: &mut Vec<Run>,
+) {
+    let mut run_start = usize::MAX;
+    let mut prev = usize::MAX;
+    let mut len = 0usize;
+    let close = |start: usize, len: usize, best_len: &mut usize, best: &mut Vec<Run>| {
+        if len > *best_len {
+            *best_len = len;
+            best.clear();
+        }
+        if len == *best_len && len > 1 {
+            best.push(Run { start: cell(start), len, horizontal });
+        }
+    };
+    for i in 0..f.len() {
+        let mut word = f[i];
+        while word != 0 {
+            let bit = word.trailing_zeros() as usize;
+            word &= word - 1;
+            let p = i * 64 + bit;
+            // a new cell must not sit across a fixed wall from another cell of the same room
+            if walls.any && !wall_ok(grid, walls, cell(p), label) {
+                continue;
+            }
+            let joined = len > 0 && p == prev + 1 && sep.is_none_or(|sp| sp[p / 64] & (1 << (p % 64)) == 0);
+            if joined {
+                len += 1;
+            } else {
+                if len > 0 {
+                    close(run_start, len, best_len, best);
+                }
+                run_start = p;
+                len = 1;
+            }
+            prev = p;
+        }
+    }
+    if len > 0 {
+        close(run_start, len, best_len, best);
     }
 }
 

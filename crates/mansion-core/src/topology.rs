@@ -107,6 +107,37 @@ fn advance(c: &mut Contacts, slot: usize, run_slot: &mut usize, run: &mut u32) {
     }
 }
 
+/// Number of 4-connected pieces of every round label inside the region, in one pass
+/// (`index[label]` is the label's round position or -1).
+pub fn pieces_all(grid: &Grid, region: &Region, index: &[i16], n_round: usize, s: &mut Scratch) -> Vec<u32> {
+    let w = grid.w;
+    let epoch = s.bump();
+    let mut out = vec![0u32; n_round];
+    for &start in &region.cells {
+        let start = start as usize;
+        if s.stamp[start] == epoch {
+            continue;
+        }
+        let label = grid.cells[start];
+        match index.get(label as usize) {
+            Some(&k) if k >= 0 => out[k as usize] += 1,
+            _ => continue,
+        }
+        s.queue.clear();
+        s.queue.push(start);
+        s.stamp[start] = epoch;
+        while let Some(c) = s.queue.pop() {
+            for nb in [c - 1, c + 1, c - w, c + w] {
+                if grid.cells[nb] == label && s.stamp[nb] != epoch && region.inside[nb] {
+                    s.stamp[nb] = epoch;
+                    s.queue.push(nb);
+                }
+            }
+        }
+    }
+    out
+}
+
 /// Number of 4-connected pieces of `label` inside the region and its cell count.
 pub fn pieces(grid: &Grid, region: &Region, label: Label, s: &mut Scratch) -> (usize, usize) {
     let w = grid.w;
