@@ -9,7 +9,10 @@ use mansion_core::solve::{solve_floor, SolveOptions};
 use std::hint::black_box;
 
 fn one_thread() -> rayon::ThreadPool {
-    rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("thread pool")
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("thread pool")
 }
 
 fn bench(c: &mut Criterion) {
@@ -18,16 +21,42 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("t2d_64x64_7_rooms");
     g.sample_size(20);
     // flat mode: the 7 rooms grow as one round, so one retry is exactly 100 whole candidates
-    let hundred = SolveOptions { hierarchical: false, retries: 1, batch: 100, exhaustive: true, ..base.clone() };
+    let hundred = SolveOptions {
+        hierarchical: false,
+        retries: 1,
+        batch: 100,
+        exhaustive: true,
+        ..base.clone()
+    };
     g.bench_function("100_candidates", |b| {
-        b.iter(|| pool.install(|| solve_floor(black_box(&graph), &fp, &hundred, &mut HeuristicPlanner).expect("solvable")))
+        b.iter(|| {
+            pool.install(|| {
+                solve_floor(black_box(&graph), &fp, &hundred, &mut HeuristicPlanner)
+                    .expect("solvable")
+            })
+        })
     });
-    let budget = SolveOptions { hierarchical: false, retries: 10, batch: 100, exhaustive: true, ..base.clone() };
+    let budget = SolveOptions {
+        hierarchical: false,
+        retries: 10,
+        batch: 100,
+        exhaustive: true,
+        ..base.clone()
+    };
     g.bench_function("budget_10x100", |b| {
-        b.iter(|| pool.install(|| solve_floor(black_box(&graph), &fp, &budget, &mut HeuristicPlanner).expect("solvable")))
+        b.iter(|| {
+            pool.install(|| {
+                solve_floor(black_box(&graph), &fp, &budget, &mut HeuristicPlanner)
+                    .expect("solvable")
+            })
+        })
     });
     g.bench_function("solve_floor_hierarchical", |b| {
-        b.iter(|| pool.install(|| solve_floor(black_box(&graph), &fp, &base, &mut HeuristicPlanner).expect("solvable")))
+        b.iter(|| {
+            pool.install(|| {
+                solve_floor(black_box(&graph), &fp, &base, &mut HeuristicPlanner).expect("solvable")
+            })
+        })
     });
     g.finish();
 
@@ -35,7 +64,11 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("office_500m2_20_rooms");
     g.sample_size(10);
     g.bench_function("solve_floor", |b| {
-        b.iter(|| pool.install(|| solve_floor(black_box(&graph), &fp, &opts, &mut HeuristicPlanner).expect("solvable")))
+        b.iter(|| {
+            pool.install(|| {
+                solve_floor(black_box(&graph), &fp, &opts, &mut HeuristicPlanner).expect("solvable")
+            })
+        })
     });
     g.finish();
 }

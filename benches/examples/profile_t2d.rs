@@ -5,12 +5,25 @@ use mansion_core::solve::{solve_floor, SolveOptions};
 
 fn main() {
     let (graph, fp, base) = t2d_like();
-    let opts = SolveOptions { hierarchical: false, retries: 10, batch: 100, exhaustive: true, ..base };
-    let reps: usize = std::env::args().nth(1).and_then(|s| s.parse().ok()).unwrap_or(3);
+    let opts = SolveOptions {
+        hierarchical: false,
+        retries: 10,
+        batch: 100,
+        exhaustive: true,
+        ..base
+    };
+    let reps: usize = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3);
     let t = std::time::Instant::now();
     for _ in 0..reps {
         solve_floor(&graph, &fp, &opts, &mut HeuristicPlanner).expect("solvable");
     }
     let per = t.elapsed().as_secs_f64() / reps as f64;
-    println!("{:.1} ms per 10x100 budget, {:.1} µs per candidate", per * 1e3, per * 1e6 / 1000.0);
+    println!(
+        "{:.1} ms per 10x100 budget, {:.1} µs per candidate",
+        per * 1e3,
+        per * 1e6 / 1000.0
+    );
 }

@@ -215,6 +215,8 @@ def report(res: dict[str, Any]) -> None:
         widths = [max(len(c), *(len(r[i]) for r in cells)) for i, c in enumerate(cols)]
         for row in (cols, *cells):
             print("  ".join(v.ljust(wd) if i == 0 else v.rjust(wd) for i, (v, wd) in enumerate(zip(row, widths))))
+    load = res["machine"]["loadavg_at_start"][0]
+    print(f"load average at start {load:.2f} on {res['machine']['cpus']} CPUs" + (" — busy machine, timings are noisy" if load > 0.5 else ""))
     print("ref ÷ this: reference µs per candidate over this implementation's; area err: mean |area - target| / target")
     for key, title in (("rust_1_thread", "Rust 1 thread"), ("rust", "Rust default"), ("reference", "reference")):
         if res.get(key):
@@ -262,7 +264,7 @@ def main() -> int:
             "seeds": case["seeds"].tolist(),
         },
         "rust_threads": f"RAYON_NUM_THREADS={threads_env}" if threads_env else f"default threads ({os.cpu_count()} CPUs)",
-        "machine": {"python": platform.python_version(), "numpy": np.__version__, "cpus": os.cpu_count(), "platform": platform.platform()},
+        "machine": {"python": platform.python_version(), "numpy": np.__version__, "cpus": os.cpu_count(), "platform": platform.platform(), "loadavg_at_start": list(os.getloadavg())},
     }
 
     if threads_env is None and not args.no_single_thread:

@@ -5,13 +5,22 @@ use mansion_core::raster::{CoreSpec, FootprintSpec};
 use mansion_core::solve::{EdgeSpec, GraphSpec, NodeSpec, SolveOptions};
 
 fn node(id: &str, kind: &str, area: f64) -> NodeSpec {
-    NodeSpec { id: id.into(), kind: kind.into(), area, room_type: None }
+    NodeSpec {
+        id: id.into(),
+        kind: kind.into(),
+        area,
+        room_type: None,
+    }
 }
 
 fn edges(pairs: &[(&str, &str)]) -> Vec<EdgeSpec> {
     pairs
         .iter()
-        .map(|(a, b)| EdgeSpec { source: (*a).into(), target: (*b).into(), kind: "access".into() })
+        .map(|(a, b)| EdgeSpec {
+            source: (*a).into(),
+            target: (*b).into(),
+            kind: "access".into(),
+        })
         .collect()
 }
 
@@ -39,10 +48,21 @@ pub fn t2d_like() -> (GraphSpec, FootprintSpec, SolveOptions) {
         ]),
     };
     let fp = FootprintSpec {
-        polygon: vec![[0.0, 0.0], [16.0, 0.0], [16.0, 11.0], [11.0, 11.0], [11.0, 16.0], [0.0, 16.0]],
+        polygon: vec![
+            [0.0, 0.0],
+            [16.0, 0.0],
+            [16.0, 11.0],
+            [11.0, 11.0],
+            [11.0, 16.0],
+            [0.0, 16.0],
+        ],
         ..Default::default()
     };
-    let opts = SolveOptions { cell_size: 0.25, min_contact: 1.0, ..Default::default() };
+    let opts = SolveOptions {
+        cell_size: 0.25,
+        min_contact: 1.0,
+        ..Default::default()
+    };
     (graph, fp, opts)
 }
 
@@ -72,7 +92,13 @@ pub fn office() -> (GraphSpec, FootprintSpec, SolveOptions) {
         node("copy", "area", 7.0),
         node("waiting", "area", 10.0),
     ];
-    nodes.iter_mut().for_each(|n| n.room_type = Some(n.id.trim_end_matches(char::is_numeric).trim_end_matches('_').to_string()));
+    nodes.iter_mut().for_each(|n| {
+        n.room_type = Some(
+            n.id.trim_end_matches(char::is_numeric)
+                .trim_end_matches('_')
+                .to_string(),
+        )
+    });
     let graph = GraphSpec {
         nodes,
         edges: edges(&[
@@ -101,8 +127,18 @@ pub fn office() -> (GraphSpec, FootprintSpec, SolveOptions) {
     let fp = FootprintSpec {
         polygon: vec![[0.0, 0.0], [25.0, 0.0], [25.0, 20.0], [0.0, 20.0]],
         cores: vec![
-            CoreSpec { id: "stair".into(), kind: "stair".into(), x: [0.0, 3.0], y: [0.0, 5.0] },
-            CoreSpec { id: "lift".into(), kind: "elevator".into(), x: [22.5, 25.0], y: [17.5, 20.0] },
+            CoreSpec {
+                id: "stair".into(),
+                kind: "stair".into(),
+                x: [0.0, 3.0],
+                y: [0.0, 5.0],
+            },
+            CoreSpec {
+                id: "lift".into(),
+                kind: "elevator".into(),
+                x: [22.5, 25.0],
+                y: [17.5, 20.0],
+            },
         ],
         ..Default::default()
     };
@@ -123,7 +159,10 @@ mod tests {
                 Ok(s) => {
                     eprintln!("{:?}", t.elapsed());
                     for r in &s.diagnostics.rounds {
-                        eprintln!("{} {:?} retry {:?} cand {} {:.4}s rejected {:?}", r.parent, r.children, r.retry, r.candidates, r.seconds, r.rejected);
+                        eprintln!(
+                            "{} {:?} retry {:?} cand {} {:.4}s rejected {:?}",
+                            r.parent, r.children, r.retry, r.candidates, r.seconds, r.rejected
+                        );
                     }
                 }
                 Err(e) => panic!("{e}"),

@@ -159,7 +159,13 @@ pub fn fill_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scrat
 
 /// Leftover cells of a round go to the parent, which keeps only its largest connected piece; the
 /// other pieces are emptied for hole filling to hand to the children around them.
-pub fn assign_remainder(grid: &mut Grid, region: &Region, walls: &Walls, parent: Label, s: &mut Scratch) {
+pub fn assign_remainder(
+    grid: &mut Grid,
+    region: &Region,
+    walls: &Walls,
+    parent: Label,
+    s: &mut Scratch,
+) {
     for &c in &region.cells {
         if grid.cells[c as usize] == EMPTY {
             grid.cells[c as usize] = parent;
@@ -169,7 +175,13 @@ pub fn assign_remainder(grid: &mut Grid, region: &Region, walls: &Walls, parent:
 }
 
 /// Empty every 4-connected piece of `label` inside the region except the largest.
-pub fn keep_largest_piece(grid: &mut Grid, region: &Region, walls: &Walls, label: Label, s: &mut Scratch) {
+pub fn keep_largest_piece(
+    grid: &mut Grid,
+    region: &Region,
+    walls: &Walls,
+    label: Label,
+    s: &mut Scratch,
+) {
     let w = grid.w;
     let epoch = s.bump();
     let mut pieces: Vec<(usize, usize)> = Vec::new(); // (start, size)
@@ -185,7 +197,11 @@ pub fn keep_largest_piece(grid: &mut Grid, region: &Region, walls: &Walls, label
         while let Some(c) = s.queue.pop() {
             size += 1;
             for n in [c - 1, c + 1, c - w, c + w] {
-                if grid.cells[n] == label && s.stamp[n] != epoch && region.inside[n] && !walls.blocked(c, n) {
+                if grid.cells[n] == label
+                    && s.stamp[n] != epoch
+                    && region.inside[n]
+                    && !walls.blocked(c, n)
+                {
                     s.stamp[n] = epoch;
                     s.queue.push(n);
                 }
@@ -213,7 +229,11 @@ pub fn keep_largest_piece(grid: &mut Grid, region: &Region, walls: &Walls, label
         while let Some(c) = s.queue.pop() {
             grid.cells[c] = EMPTY;
             for n in [c - 1, c + 1, c - w, c + w] {
-                if grid.cells[n] == label && s.stamp[n] != epoch && region.inside[n] && !walls.blocked(c, n) {
+                if grid.cells[n] == label
+                    && s.stamp[n] != epoch
+                    && region.inside[n]
+                    && !walls.blocked(c, n)
+                {
                     s.stamp[n] = epoch;
                     s.queue.push(n);
                 }

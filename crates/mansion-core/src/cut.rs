@@ -7,8 +7,8 @@
 
 use crate::cleanup::{self, Scratch};
 use crate::energy::{self, RoomFeatures, Weights};
-use crate::growth::{self, Grower};
 use crate::grid::{Grid, Label, Walls, EMPTY};
+use crate::growth::{self, Grower};
 use crate::region::Region;
 use crate::topology;
 use rand::{Rng, SeedableRng};
@@ -101,6 +101,11 @@ pub struct CutOutcome {
     pub energy: f64,
 }
 
+/// A surviving candidate: energy, index in its batch, grid and per-room features.
+type Survivor = (f64, usize, Grid, Vec<RoomFeatures>);
+/// A scored candidate or why it was rejected.
+type Scored = Result<(f64, Grid, Vec<RoomFeatures>), Reject>;
+
 /// Why a candidate failed the filter.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Reject {
@@ -114,7 +119,12 @@ pub enum Reject {
 
 impl Reject {
     fn describe(&self, names: &[String]) -> String {
-        let n = |l: &Label| names.get(*l as usize).cloned().unwrap_or_else(|| format!("#{l}"));
+        let n = |l: &Label| {
+            names
+                .get(*l as usize)
+                .cloned()
+                .unwrap_or_else(|| format!("#{l}"))
+        };
         match self {
             Reject::Unfilled => "cells left unassigned".into(),
             Reject::Missing(l) => format!("room '{}' vanished", n(l)),
@@ -144,7 +154,14 @@ pub struct Prepared<'a> {
 }
 
 impl<'a> Prepared<'a> {
-    pub fn new(grid: &Grid, walls: &'a Walls, spec: &'a RoundSpec, opts: &'a CutOptions, n_labels: usize, round: u64) -> Self {
+    pub fn new(
+        grid: &Grid,
+        walls: &'a Walls,
+        spec: &'a RoundSpec,
+        opts: &'a CutOptions,
+        n_labels: usize,
+        round: u64,
+    ) -> Self {
         let region = Region::of_label(grid, spec.parent);
         let mut base = grid.clone();
         for &c in &region.cells {
@@ -167,7 +184,18 @@ impl<'a> Prepared<'a> {
         for (k, &l) in labels.iter().enumerate() {
             index[l as usize] = k as i16;
         }
-        Prepared { spec, walls, opts, region, base, labels, targets, seeds, index, round }
+        Prepared {
+            spec,
+            walls,
+            opts,
+            region,
+            base,
+            labels,
+            targets,
+            seeds,
+            index,
+            round,
+        }
     }
 
     /// Perturbation radius of each grower at retry `j`.
@@ -223,7 +251,11 @@ impl<'a> Prepared<'a> {
                     let t = rng.random::<f64>() * std::f64::consts::TAU;
                     let q = [p[0] + r * t.cos(), p[1] + r * t.sin()];
                     if let Some(c) = self.in_region(q) {
-                        if !out.contains(&c) && out.iter().all(|&o| dist2(centre(o, w), centre(c, w)) >= sep2) {
+                        if !out.contains(&c)
+                            && out
+                                .iter()
+                                .all(|&o| dist2(centre(o, w), centre(c, w)) >= sep2)
+                        {
                             chosen = Some(c);
                             break;
                         }
@@ -248,7 +280,12 @@ impl<'a> Prepared<'a> {
         let w = self.region.w;
         let n = self.spec.growers.len();
         let mut order: Vec<usize> = (0..n).collect();
-        order.sort_by(|&a, &b| self.spec.growers[b].target.total_cmp(&self.spec.growers[a].target).then(a.cmp(&b)));
+        order.sort_by(|&a, &b| {
+            self.spec.growers[b]
+                .target
+                .total_cmp(&self.spec.growers[a].target)
+                .then(a.cmp(&b))
+        });
         let mut seeds = vec![usize::MAX; n];
         let mut placed: Vec<usize> = Vec::with_capacity(n);
         for &k in &order {
@@ -261,7 +298,10 @@ impl<'a> Prepared<'a> {
                 let rk = self.spec.growers[k].target.sqrt();
                 let score = placed
                     .iter()
-                    .map(|&o| dist2(centre(seeds[o], w), centre(c, w)).sqrt() / (rk + self.spec.growers[o].target.sqrt()))
+                    .map(|&o| {
+                        dist2(centre(seeds[o], w), centre(c, w)).sqrt()
+                            / (rk + self.spec.growers[o].target.sqrt())
+                    })
                     .fold(f64::INFINITY, f64::min);
                 if best.is_none_or(|(s, _)| score > s) {
                     best = Some((score, c));
@@ -276,14 +316,23 @@ impl<'a> Prepared<'a> {
 
     /// One candidate: grow from the seeds, hand the leftover to the parent or to the neighbours,
     /// clean, check the topology and score.
-    pub fn candidate(&self, seeds: &[usize], rng: &mut Xoshiro256PlusPlus, s: &mut Scratch) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
+    pub fn candidate(
+        &self,
+        seeds: &[usize],
+        rng: &mut Xoshiro256PlusPlus,
+        s: &mut Scratch,
+    ) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
         let mut grid = self.base.clone();
         growth::grow(&mut grid, self.walls, &self.spec.growers, seeds, rng);
         self.finish(grid, s)
     }
 
     /// Everything after growth; public so benchmarks and references can share it.
-    pub fn finish(&self, mut grid: Grid, s: &mut Scratch) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
+    pub fn finish(
+        &self,
+        mut grid: Grid,
+        s: &mut Scratch,
+    ) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
         if let Some((parent, _)) = self.spec.remainder {
             cleanup::assign_remainder(&mut grid, &self.region, self.walls, parent, s);
         }
@@ -291,7 +340,14 @@ impl<'a> Prepared<'a> {
             return Err(Reject::Unfilled);
         }
         self.check(&grid, s)?;
-        let mut feats = energy::features(&grid, &self.region, &self.labels, &self.index, &self.targets, &self.seeds);
+        let mut feats = energy::features(
+            &grid,
+            &self.region,
+            &self.labels,
+            &self.index,
+            &self.targets,
+            &self.seeds,
+        );
         let e = energy::score(&mut feats, &self.opts.weights);
         Ok((e, grid, feats))
     }
@@ -316,7 +372,8 @@ impl<'a> Prepared<'a> {
                 }
             }
         }
-        let contacts = topology::measure_contacts(grid, &self.region, &self.index, self.labels.len());
+        let contacts =
+            topology::measure_contacts(grid, &self.region, &self.index, self.labels.len());
         for &(a, b) in &self.spec.required {
             if contacts.get(&self.index, a, b).1 < self.opts.min_contact {
                 return Err(Reject::Adjacency(a, b));
@@ -334,12 +391,18 @@ impl<'a> Prepared<'a> {
     }
 
     /// Run `count` candidates in parallel; seeds come from `seeder`. Returns the best survivor.
-    fn batch<F>(&self, retry: u64, count: usize, rejected: &mut BTreeMap<String, usize>, seeder: F) -> Option<(f64, usize, Grid, Vec<RoomFeatures>)>
+    fn batch<F>(
+        &self,
+        retry: u64,
+        count: usize,
+        rejected: &mut BTreeMap<String, usize>,
+        seeder: F,
+    ) -> Option<Survivor>
     where
         F: Fn(usize, &mut Xoshiro256PlusPlus) -> Option<Vec<usize>> + Sync,
     {
         let cells = self.base.cells.len();
-        let results: Vec<Result<(f64, Grid, Vec<RoomFeatures>), Reject>> = (0..count)
+        let results: Vec<Scored> = (0..count)
             .into_par_iter()
             .map_init(
                 || Scratch::new(cells),
@@ -352,7 +415,7 @@ impl<'a> Prepared<'a> {
                 },
             )
             .collect();
-        let mut best: Option<(f64, usize, Grid, Vec<RoomFeatures>)> = None;
+        let mut best: Option<Survivor> = None;
         for (i, r) in results.into_iter().enumerate() {
             match r {
                 Ok((e, g, f)) => {
@@ -368,11 +431,21 @@ impl<'a> Prepared<'a> {
 }
 
 /// Run the cutting node on one round.
-pub fn cut(grid: &Grid, walls: &Walls, spec: &RoundSpec, opts: &CutOptions, n_labels: usize, round: u64) -> crate::Result<CutOutcome> {
+pub fn cut(
+    grid: &Grid,
+    walls: &Walls,
+    spec: &RoundSpec,
+    opts: &CutOptions,
+    n_labels: usize,
+    round: u64,
+) -> crate::Result<CutOutcome> {
     let p = Prepared::new(grid, walls, spec, opts, n_labels, round);
     let mut rejected = BTreeMap::new();
     let mut candidates = 0;
-    let finish = |best: (f64, usize, Grid, Vec<RoomFeatures>), retry: Option<usize>, candidates: usize, rejected: BTreeMap<String, usize>| {
+    let finish = |best: Survivor,
+                  retry: Option<usize>,
+                  candidates: usize,
+                  rejected: BTreeMap<String, usize>| {
         let (energy, _, grid, feats) = best;
         CutOutcome {
             grid,
@@ -384,7 +457,7 @@ pub fn cut(grid: &Grid, walls: &Walls, spec: &RoundSpec, opts: &CutOptions, n_la
             energy,
         }
     };
-    let mut kept: Option<((f64, usize, Grid, Vec<RoomFeatures>), usize)> = None;
+    let mut kept: Option<(Survivor, usize)> = None;
     for j in 0..opts.retries.max(1) {
         let radii = p.radii(j);
         let best = p.batch(j as u64, opts.batch.max(1), &mut rejected, |i, rng| {
@@ -413,7 +486,9 @@ pub fn cut(grid: &Grid, walls: &Walls, spec: &RoundSpec, opts: &CutOptions, n_la
     let mut retry_tag = opts.retries as u64;
     while done < opts.fallback_samples {
         let count = opts.batch.max(1).min(opts.fallback_samples - done);
-        let best = p.batch(retry_tag, count, &mut rejected, |_, rng| p.sample_fallback_seeds(rng));
+        let best = p.batch(retry_tag, count, &mut rejected, |_, rng| {
+            p.sample_fallback_seeds(rng)
+        });
         candidates += count;
         done += count;
         retry_tag += 1;
@@ -421,11 +496,18 @@ pub fn cut(grid: &Grid, walls: &Walls, spec: &RoundSpec, opts: &CutOptions, n_la
             return Ok(finish(b, None, candidates, rejected));
         }
     }
-    let children: Vec<&str> = spec.growers.iter().map(|g| spec.names[g.label as usize].as_str()).collect();
+    let children: Vec<&str> = spec
+        .growers
+        .iter()
+        .map(|g| spec.names[g.label as usize].as_str())
+        .collect();
     let reasons: Vec<String> = {
         let mut v: Vec<(&String, &usize)> = rejected.iter().collect();
         v.sort_by(|a, b| b.1.cmp(a.1));
-        v.iter().take(4).map(|(r, n)| format!("{n} × {r}")).collect()
+        v.iter()
+            .take(4)
+            .map(|(r, n)| format!("{n} × {r}"))
+            .collect()
     };
     Err(crate::CoreError::Infeasible(format!(
         "cutting '{}' into {:?}: {} retries × {} candidates and {} Monte Carlo candidates were all rejected ({})",
@@ -463,13 +545,26 @@ pub fn splitmix(mut z: u64) -> u64 {
 /// `grid` is a padded solver grid; the cells labelled `region` are cut into `targets.len()` new
 /// rooms labelled `first_label..`, seeded around `seeds` (padded grid units) within `radius` cells;
 /// the leftover stays `region`.
-pub fn grow_batch(grid: &Grid, region: Label, first_label: Label, seeds: &[[f64; 2]], targets: &[f64], batch: usize, rng_seed: u64, radius: f64) -> Vec<Grid> {
+#[allow(clippy::too_many_arguments)]
+pub fn grow_batch(
+    grid: &Grid,
+    region: Label,
+    first_label: Label,
+    seeds: &[[f64; 2]],
+    targets: &[f64],
+    batch: usize,
+    rng_seed: u64,
+    radius: f64,
+) -> Vec<Grid> {
     let walls = Walls::none(grid.w, grid.h);
     let cells = grid.cells.iter().filter(|&&c| c == region).count() as f64;
     let growers: Vec<Grower> = targets
         .iter()
         .enumerate()
-        .map(|(k, &t)| Grower { label: first_label + k as Label, target: t })
+        .map(|(k, &t)| Grower {
+            label: first_label + k as Label,
+            target: t,
+        })
         .collect();
     let n_labels = first_label as usize + targets.len();
     let spec = RoundSpec {
@@ -482,7 +577,13 @@ pub fn grow_batch(grid: &Grid, region: Label, first_label: Label, seeds: &[[f64;
         reserved: vec![],
         names: vec![String::new(); n_labels],
     };
-    let opts = CutOptions { rng_seed, r_base: radius, k: 0.0, gammas: vec![1.0], ..CutOptions::default() };
+    let opts = CutOptions {
+        rng_seed,
+        r_base: radius,
+        k: 0.0,
+        gammas: vec![1.0],
+        ..CutOptions::default()
+    };
     let p = Prepared::new(grid, &walls, &spec, &opts, n_labels, 0);
     let radii = p.radii(0);
     let n = grid.cells.len();

@@ -106,7 +106,10 @@ pub fn features(
         f.corner = (corners[k] as f64 - 4.0).max(0.0);
     }
     // min–max normalisation of the seed distance across the rooms that have seeds
-    let seeded: Vec<f64> = (0..n).filter(|&k| seeds[k].is_some()).map(|k| out[k].seed_dist).collect();
+    let seeded: Vec<f64> = (0..n)
+        .filter(|&k| seeds[k].is_some())
+        .map(|k| out[k].seed_dist)
+        .collect();
     if let (Some(lo), Some(hi)) = (
         seeded.iter().cloned().reduce(f64::min),
         seeded.iter().cloned().reduce(f64::max),
@@ -129,11 +132,21 @@ fn interior_corners(grid: &Grid, region: &Region, index: &[i16], n: usize) -> Ve
     // vertex (i, j) is the lower-left corner of cell (i, j)
     for j in (y0 + 1)..=y1 {
         for i in (x0 + 1)..=x1 {
-            let (bl, br, tl, tr) = ((j - 1) * w + i - 1, (j - 1) * w + i, j * w + i - 1, j * w + i);
+            let (bl, br, tl, tr) = (
+                (j - 1) * w + i - 1,
+                (j - 1) * w + i,
+                j * w + i - 1,
+                j * w + i,
+            );
             if !(region.inside[bl] && region.inside[br] && region.inside[tl] && region.inside[tr]) {
                 continue;
             }
-            let q = [grid.cells[bl], grid.cells[br], grid.cells[tl], grid.cells[tr]];
+            let q = [
+                grid.cells[bl],
+                grid.cells[br],
+                grid.cells[tl],
+                grid.cells[tr],
+            ];
             for (p, &l) in q.iter().enumerate() {
                 if q[..p].contains(&l) {
                     continue; // count each label once per vertex
@@ -192,7 +205,14 @@ mod tests {
     fn features_of_two_rectangles() {
         let (g, r) = grid_of(&["1122", "1122"]);
         let index = [-1i16, 0, 1];
-        let f = features(&g, &r, &[1, 2], &index, &[4.0, 2.0], &[Some([2.0, 2.0]), Some([4.0, 2.0])]);
+        let f = features(
+            &g,
+            &r,
+            &[1, 2],
+            &index,
+            &[4.0, 2.0],
+            &[Some([2.0, 2.0]), Some([4.0, 2.0])],
+        );
         assert_eq!(f[0].area, 4);
         assert_eq!(f[0].centroid, [2.0, 2.0]); // padded grid units
         assert_eq!(f[0].ratio, 0.0);
@@ -208,7 +228,14 @@ mod tests {
         // room 1 is a plus-like blob with 8 interior corners... here an L of 6 interior corners
         let (g, r) = grid_of(&["00000", "01100", "01110", "01110", "00000"]);
         let index = [0i16, 1];
-        let f = features(&g, &r, &[0, 1], &index, &[17.0, 8.0], &[None, Some([2.5, 2.5])]);
+        let f = features(
+            &g,
+            &r,
+            &[0, 1],
+            &index,
+            &[17.0, 8.0],
+            &[None, Some([2.5, 2.5])],
+        );
         assert_eq!(f[1].area, 8);
         assert_eq!(f[1].corner, 2.0);
         assert_eq!(f[1].wall, 0.0);

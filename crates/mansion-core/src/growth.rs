@@ -105,10 +105,11 @@ fn word_mask(i: usize, a: usize, b: usize) -> u64 {
 /// Are bits `a..=b` all set? (`a > b` is an empty range: true.)
 #[inline]
 fn all_set(words: &[u64], a: usize, b: usize) -> bool {
-    a > b || (a / 64..=b / 64).all(|i| {
-        let m = word_mask(i, a, b);
-        words[i] & m == m
-    })
+    a > b
+        || (a / 64..=b / 64).all(|i| {
+            let m = word_mask(i, a, b);
+            words[i] & m == m
+        })
 }
 
 /// Are bits `a..=b` all clear?
@@ -172,21 +173,31 @@ pub fn grow<R: Rng>(
     let mut area = vec![0usize; n];
     // Inclusive bounding boxes (x0, y0, x1, y1); during the rectangular phase they are the rooms.
     let mut bbox = vec![(0usize, 0usize, 0usize, 0usize); n];
-    let take = |grid: &mut Grid, free: &mut Bits, room: &mut Bits, label: Label, x: usize, y: usize| {
-        grid.cells[y * w + x] = label;
-        free.clear(x, y);
-        room.set(x, y);
-    };
+    let take =
+        |grid: &mut Grid, free: &mut Bits, room: &mut Bits, label: Label, x: usize, y: usize| {
+            grid.cells[y * w + x] = label;
+            free.clear(x, y);
+            room.set(x, y);
+        };
     for k in 0..n {
         let s = seeds[k];
         debug_assert_eq!(grid.cells[s], EMPTY);
-        take(grid, &mut free, &mut rooms[k], growers[k].label, s % w, s / w);
+        take(
+            grid,
+            &mut free,
+            &mut rooms[k],
+            growers[k].label,
+            s % w,
+            s / w,
+        );
         area[k] = 1;
         bbox[k] = (s % w, s / w, s % w, s / w);
     }
 
     // --- rectangular growth: add a whole free line beside one side, longest side first ---
-    let mut active: Vec<usize> = (0..n).filter(|&k| (area[k] as f64) < growers[k].target).collect();
+    let mut active: Vec<usize> = (0..n)
+        .filter(|&k| (area[k] as f64) < growers[k].target)
+        .collect();
     let mut sides: Vec<(usize, u8)> = Vec::with_capacity(4);
     while !active.is_empty() {
         let pos = pick_weighted(rng, growers, &active);
@@ -199,22 +210,32 @@ pub fn grow<R: Rng>(
                 0 => (
                     y1 - y0 + 1,
                     all_set(free.col(x0 - 1), y0, y1)
-                        && wb.as_ref().is_none_or(|b| none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)),
+                        && wb.as_ref().is_none_or(|b| {
+                            none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)
+                        }),
                 ),
                 1 => (
                     y1 - y0 + 1,
                     all_set(free.col(x1 + 1), y0, y1)
-                        && wb.as_ref().is_none_or(|b| none_set(b.v.col(x1 + 1), y0, y1) && none_set(b.h.col(x1 + 1), y0 + 1, y1)),
+                        && wb.as_ref().is_none_or(|b| {
+                            none_set(b.v.col(x1 + 1), y0, y1)
+                                && none_set(b.h.col(x1 + 1), y0 + 1, y1)
+                        }),
                 ),
                 2 => (
                     x1 - x0 + 1,
                     all_set(free.row(y0 - 1), x0, x1)
-                        && wb.as_ref().is_none_or(|b| none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)),
+                        && wb.as_ref().is_none_or(|b| {
+                            none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)
+                        }),
                 ),
                 _ => (
                     x1 - x0 + 1,
                     all_set(free.row(y1 + 1), x0, x1)
-                        && wb.as_ref().is_none_or(|b| none_set(b.h.row(y1 + 1), x0, x1) && none_set(b.v.row(y1 + 1), x0 + 1, x1)),
+                        && wb.as_ref().is_none_or(|b| {
+                            none_set(b.h.row(y1 + 1), x0, x1)
+                                && none_set(b.v.row(y1 + 1), x0 + 1, x1)
+                        }),
                 ),
             };
             if ok && within_cap(area[k], len, growers[k].target) {
@@ -227,8 +248,16 @@ pub fn grow<R: Rng>(
         }
         let best = sides.iter().map(|s| s.0).max().unwrap_or(0);
         let n_ties = sides.iter().filter(|s| s.0 == best).count();
-        let pick = if n_ties > 1 { rng.random_range(0..n_ties) } else { 0 };
-        let side = sides.iter().filter(|s| s.0 == best).nth(pick).map_or(0, |s| s.1);
+        let pick = if n_ties > 1 {
+            rng.random_range(0..n_ties)
+        } else {
+            0
+        };
+        let side = sides
+            .iter()
+            .filter(|s| s.0 == best)
+            .nth(pick)
+            .map_or(0, |s| s.1);
         let (nx0, ny0, nx1, ny1) = match side {
             0 => (x0 - 1, y0, x0 - 1, y1),
             1 => (x1 + 1, y0, x1 + 1, y1),
@@ -248,13 +277,25 @@ pub fn grow<R: Rng>(
     }
 
     // --- L-shaped growth: extend by the longest run of free cells beside the room's own cells ---
-    let mut active: Vec<usize> = (0..n).filter(|&k| (area[k] as f64) < growers[k].target).collect();
+    let mut active: Vec<usize> = (0..n)
+        .filter(|&k| (area[k] as f64) < growers[k].target)
+        .collect();
     let mut scratch = RunScratch::new(free.wr.max(free.wc));
     while !active.is_empty() {
         let pos = pick_weighted(rng, growers, &active);
         let k = active[pos];
         let label = growers[k].label;
-        match best_run(grid, walls, wb.as_ref(), &free, &rooms[k], label, bbox[k], &mut scratch, rng) {
+        match best_run(
+            grid,
+            walls,
+            wb.as_ref(),
+            &free,
+            &rooms[k],
+            label,
+            bbox[k],
+            &mut scratch,
+            rng,
+        ) {
             Some(run) if within_cap(area[k], run.len, growers[k].target) => {
                 let step = if run.horizontal { 1 } else { w };
                 for t in 0..run.len {
@@ -319,7 +360,7 @@ fn best_run<R: Rng>(
     let (x0, y0, x1, y1) = bbox;
     s.best.clear();
     let mut best_len = 1usize; // runs of one cell only make spurs
-    // rows beyond the bottom and top of the room's cells: runs along x, split by vertical walls
+                               // rows beyond the bottom and top of the room's cells: runs along x, split by vertical walls
     for y in y0..=y1 {
         for up in [false, true] {
             let ty = if up { y + 1 } else { y - 1 };
@@ -332,7 +373,17 @@ fn best_run<R: Rng>(
                 }
             }
             let sep = wb.map(|b| b.v.row(ty));
-            scan_runs(&s.f[..free.wr], sep, |x| ty * w + x, true, grid, walls, label, &mut best_len, &mut s.best);
+            scan_runs(
+                &s.f[..free.wr],
+                sep,
+                |x| ty * w + x,
+                true,
+                grid,
+                walls,
+                label,
+                &mut best_len,
+                &mut s.best,
+            );
         }
     }
     // columns beyond the left and right of the room's cells: runs along y, split by horizontal walls
@@ -347,13 +398,27 @@ fn best_run<R: Rng>(
                 }
             }
             let sep = wb.map(|b| b.h.col(tx));
-            scan_runs(&s.f[..free.wc], sep, |y| y * w + tx, false, grid, walls, label, &mut best_len, &mut s.best);
+            scan_runs(
+                &s.f[..free.wc],
+                sep,
+                |y| y * w + tx,
+                false,
+                grid,
+                walls,
+                label,
+                &mut best_len,
+                &mut s.best,
+            );
         }
     }
     if s.best.is_empty() {
         None
     } else {
-        let i = if s.best.len() > 1 { rng.random_range(0..s.best.len()) } else { 0 };
+        let i = if s.best.len() > 1 {
+            rng.random_range(0..s.best.len())
+        } else {
+            0
+        };
         Some(s.best[i])
     }
 }
@@ -382,11 +447,15 @@ fn scan_runs(
             best.clear();
         }
         if len == *best_len && len > 1 {
-            best.push(Run { start: cell(start), len, horizontal });
+            best.push(Run {
+                start: cell(start),
+                len,
+                horizontal,
+            });
         }
     };
-    for i in 0..f.len() {
-        let mut word = f[i];
+    for (i, &w0) in f.iter().enumerate() {
+        let mut word = w0;
         while word != 0 {
             let bit = word.trailing_zeros() as usize;
             word &= word - 1;
@@ -395,7 +464,8 @@ fn scan_runs(
             if walls.any && !wall_ok(grid, walls, cell(p), label) {
                 continue;
             }
-            let joined = len > 0 && p == prev + 1 && sep.is_none_or(|sp| sp[p / 64] & (1 << (p % 64)) == 0);
+            let joined =
+                len > 0 && p == prev + 1 && sep.is_none_or(|sp| sp[p / 64] & (1 << (p % 64)) == 0);
             if joined {
                 len += 1;
             } else {
@@ -437,7 +507,16 @@ mod tests {
         let walls = Walls::none(g.w, g.h);
         let mut rng = Xoshiro256PlusPlus::seed_from_u64(1);
         let seed = g.idx(5, 5);
-        let area = grow(&mut g, &walls, &[Grower { label: 1, target: 20.0 }], &[seed], &mut rng);
+        let area = grow(
+            &mut g,
+            &walls,
+            &[Grower {
+                label: 1,
+                target: 20.0,
+            }],
+            &[seed],
+            &mut rng,
+        );
         assert!((18..=22).contains(&area[0]), "area {}", area[0]);
         assert_eq!(g.count(1), area[0]);
     }
@@ -447,9 +526,18 @@ mod tests {
         let mut g = setup(16, 12);
         let walls = Walls::none(g.w, g.h);
         let growers = [
-            Grower { label: 1, target: 80.0 },
-            Grower { label: 2, target: 60.0 },
-            Grower { label: 3, target: 52.0 },
+            Grower {
+                label: 1,
+                target: 80.0,
+            },
+            Grower {
+                label: 2,
+                target: 60.0,
+            },
+            Grower {
+                label: 3,
+                target: 52.0,
+            },
         ];
         let seeds = [g.idx(3, 3), g.idx(12, 4), g.idx(8, 10)];
         for s in 0..20u64 {
@@ -458,7 +546,11 @@ mod tests {
             let area = grow(&mut gg, &walls, &growers, &seeds, &mut rng);
             for (k, gr) in growers.iter().enumerate() {
                 assert_eq!(gg.count(gr.label), area[k]);
-                assert!((area[k] as f64) < gr.target * 1.5, "room {k} overgrew: {}", area[k]);
+                assert!(
+                    (area[k] as f64) < gr.target * 1.5,
+                    "room {k} overgrew: {}",
+                    area[k]
+                );
             }
         }
         let _ = &mut g;
@@ -474,7 +566,16 @@ mod tests {
         }
         let mut rng = Xoshiro256PlusPlus::seed_from_u64(3);
         let seed = g.idx(2, 3);
-        grow(&mut g, &walls, &[Grower { label: 1, target: 60.0 }], &[seed], &mut rng);
+        grow(
+            &mut g,
+            &walls,
+            &[Grower {
+                label: 1,
+                target: 60.0,
+            }],
+            &[seed],
+            &mut rng,
+        );
         for y in 1..7 {
             assert!(g.get(5, y) != 1, "room crossed the wall at row {y}");
         }
@@ -485,7 +586,16 @@ mod tests {
     fn same_seed_same_growth() {
         let g = setup(12, 12);
         let walls = Walls::none(g.w, g.h);
-        let growers = [Grower { label: 1, target: 50.0 }, Grower { label: 2, target: 60.0 }];
+        let growers = [
+            Grower {
+                label: 1,
+                target: 50.0,
+            },
+            Grower {
+                label: 2,
+                target: 60.0,
+            },
+        ];
         let seeds = [g.idx(3, 3), g.idx(9, 9)];
         let run = |s| {
             let mut gg = g.clone();

@@ -9,13 +9,13 @@ pub mod grid;
 
 pub use error::{CoreError, Result};
 pub use grid::{Grid, GridFrame, Label, Walls, EMPTY, OUTSIDE};
-pub mod growth;
-pub mod region;
 pub mod cleanup;
-pub mod topology;
-pub mod energy;
 pub mod cut;
+pub mod energy;
+pub mod growth;
+pub mod raster;
+pub mod region;
 pub mod seedplan;
 pub mod solve;
-pub mod raster;
+pub mod topology;
 pub mod vectorise;

@@ -114,7 +114,10 @@ pub fn validate_plan(plan: &SeedPlan, req: &SeedRequest) -> Result<()> {
     let bad = |m: String| Err(CoreError::Planner(m));
     for id in plan.seeds.keys() {
         if !req.children.iter().any(|c| &c.id == id) {
-            return bad(format!("seed plan names '{id}', which is not a child of '{}'", req.parent_id));
+            return bad(format!(
+                "seed plan names '{id}', which is not a child of '{}'",
+                req.parent_id
+            ));
         }
     }
     let mut total = 0.0;
@@ -124,7 +127,12 @@ pub fn validate_plan(plan: &SeedPlan, req: &SeedRequest) -> Result<()> {
         };
         match s.centre() {
             Some(p) if p[0].is_finite() && p[1].is_finite() => {}
-            _ => return bad(format!("seed of '{}' has neither a finite point nor a box", c.id)),
+            _ => {
+                return bad(format!(
+                    "seed of '{}' has neither a finite point nor a box",
+                    c.id
+                ))
+            }
         }
         if let Some(f) = s.fraction {
             if !(f > 0.0 && f <= 1.0) {
@@ -134,7 +142,10 @@ pub fn validate_plan(plan: &SeedPlan, req: &SeedRequest) -> Result<()> {
         }
     }
     if total > 1.0 + 1e-6 {
-        return bad(format!("area fractions of the children of '{}' sum to {total:.3} > 1", req.parent_id));
+        return bad(format!(
+            "area fractions of the children of '{}' sum to {total:.3} > 1",
+            req.parent_id
+        ));
     }
     if let Some(p) = plan.parent_seed {
         if !(p[0].is_finite() && p[1].is_finite()) {
@@ -158,21 +169,37 @@ impl SeedPlanner for HeuristicPlanner {
         let w = grid.w;
         let cells: Vec<usize> = region.cells.iter().map(|&c| c as usize).collect();
         if cells.is_empty() {
-            return Err(CoreError::Planner(format!("'{}' has no cells to cut", req.parent_id)));
+            return Err(CoreError::Planner(format!(
+                "'{}' has no cells to cut",
+                req.parent_id
+            )));
         }
         let cell_area = req.frame.cell * req.frame.cell;
         let n_cells = cells.len() as f64;
-        let total_target: f64 = req.children.iter().map(|c| c.target_area).sum::<f64>().max(1e-9);
+        let total_target: f64 = req
+            .children
+            .iter()
+            .map(|c| c.target_area)
+            .sum::<f64>()
+            .max(1e-9);
 
         // distance (in cells, within the region) to the exterior envelope, or to any envelope when
         // the region does not touch the outside
         let exterior: Vec<usize> = cells
             .iter()
             .copied()
-            .filter(|&c| [c - 1, c + 1, c - w, c + w].iter().any(|&n| grid.cells[n] == OUTSIDE))
+            .filter(|&c| {
+                [c - 1, c + 1, c - w, c + w]
+                    .iter()
+                    .any(|&n| grid.cells[n] == OUTSIDE)
+            })
             .collect();
         let envelope_sources = if exterior.is_empty() {
-            cells.iter().copied().filter(|&c| region.on_envelope(c)).collect()
+            cells
+                .iter()
+                .copied()
+                .filter(|&c| region.on_envelope(c))
+                .collect()
         } else {
             exterior
         };
@@ -187,7 +214,11 @@ impl SeedPlanner for HeuristicPlanner {
                     let src: Vec<usize> = cells
                         .iter()
                         .copied()
-                        .filter(|&c| [c - 1, c + 1, c - w, c + w].iter().any(|&n| grid.cells[n] == l))
+                        .filter(|&c| {
+                            [c - 1, c + 1, c - w, c + w]
+                                .iter()
+                                .any(|&n| grid.cells[n] == l)
+                        })
                         .collect();
                     bfs(region, &src)
                 })
@@ -201,7 +232,12 @@ impl SeedPlanner for HeuristicPlanner {
                 .total_cmp(&req.children[a].target_area)
                 .then(a.cmp(&b))
         });
-        let max_target = req.children.iter().map(|c| c.target_area).fold(0.0, f64::max).max(1e-9);
+        let max_target = req
+            .children
+            .iter()
+            .map(|c| c.target_area)
+            .fold(0.0, f64::max)
+            .max(1e-9);
         let mut placed: Vec<(usize, f64)> = Vec::new(); // (cell, side in cells)
         let mut plan = SeedPlan::default();
         for &k in &order {
@@ -260,7 +296,8 @@ impl SeedPlanner for HeuristicPlanner {
             }
             placed.push((best.1, side));
             let g = [(best.1 % w) as f64 + 0.5, (best.1 / w) as f64 + 0.5];
-            plan.seeds.insert(child.id.clone(), ChildSeed::point(req.to_plan(g)));
+            plan.seeds
+                .insert(child.id.clone(), ChildSeed::point(req.to_plan(g)));
         }
         if req.want_parent_seed {
             // the parent grows from the region cell farthest from every child seed
@@ -272,7 +309,9 @@ impl SeedPlanner for HeuristicPlanner {
                         placed
                             .iter()
                             .map(|&(q, _)| {
-                                (((c % w) as f64 - (q % w) as f64).powi(2) + ((c / w) as f64 - (q / w) as f64).powi(2)).sqrt()
+                                (((c % w) as f64 - (q % w) as f64).powi(2)
+                                    + ((c / w) as f64 - (q / w) as f64).powi(2))
+                                .sqrt()
                             })
                             .fold(f64::INFINITY, f64::min)
                     };

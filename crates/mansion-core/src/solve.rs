@@ -210,10 +210,16 @@ impl Floor {
 pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Result<Floor> {
     let invalid = |m: String| Err(CoreError::InvalidInput(m));
     if !(opts.cell_size.is_finite() && opts.cell_size > 0.0) {
-        return invalid(format!("cell_size must be a positive number of metres, got {}", opts.cell_size));
+        return invalid(format!(
+            "cell_size must be a positive number of metres, got {}",
+            opts.cell_size
+        ));
     }
     if !(opts.min_contact.is_finite() && opts.min_contact >= 0.0) {
-        return invalid(format!("min_contact must be ≥ 0 metres, got {}", opts.min_contact));
+        return invalid(format!(
+            "min_contact must be ≥ 0 metres, got {}",
+            opts.min_contact
+        ));
     }
     if graph.nodes.is_empty() {
         return invalid("the room graph has no nodes".into());
@@ -230,27 +236,55 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
             return invalid(format!("duplicate room id '{}'", n.id));
         }
         if !ROLES.contains(&n.kind.as_str()) {
-            return invalid(format!("room '{}' has type '{}', expected one of {:?}", n.id, n.kind, ROLES));
+            return invalid(format!(
+                "room '{}' has type '{}', expected one of {:?}",
+                n.id, n.kind, ROLES
+            ));
         }
-        if !is_core(&n.kind) && !(n.area.is_finite() && n.area > 0.0) {
-            return invalid(format!("room '{}' has area {} m²; areas must be positive", n.id, n.area));
+        if !(is_core(&n.kind) || n.area.is_finite() && n.area > 0.0) {
+            return invalid(format!(
+                "room '{}' has area {} m²; areas must be positive",
+                n.id, n.area
+            ));
         }
     }
-    let mains: Vec<&str> = graph.nodes.iter().filter(|n| n.kind == "main").map(|n| n.id.as_str()).collect();
+    let mains: Vec<&str> = graph
+        .nodes
+        .iter()
+        .filter(|n| n.kind == "main")
+        .map(|n| n.id.as_str())
+        .collect();
     if mains.len() != 1 {
-        return invalid(format!("the graph needs exactly one 'main' node (the hub), found {}: {:?}", mains.len(), mains));
+        return invalid(format!(
+            "the graph needs exactly one 'main' node (the hub), found {}: {:?}",
+            mains.len(),
+            mains
+        ));
     }
     let mut edges = BTreeSet::new();
     for e in &graph.edges {
         let (Some(&a), Some(&b)) = (ids.get(e.source.as_str()), ids.get(e.target.as_str())) else {
-            let unknown = if ids.contains_key(e.source.as_str()) { &e.target } else { &e.source };
-            return invalid(format!("edge {} – {} refers to unknown room '{}'", e.source, e.target, unknown));
+            let unknown = if ids.contains_key(e.source.as_str()) {
+                &e.target
+            } else {
+                &e.source
+            };
+            return invalid(format!(
+                "edge {} – {} refers to unknown room '{}'",
+                e.source, e.target, unknown
+            ));
         };
         if a == b {
-            return invalid(format!("edge {} – {} joins a room to itself", e.source, e.target));
+            return invalid(format!(
+                "edge {} – {} joins a room to itself",
+                e.source, e.target
+            ));
         }
         if e.kind != "access" && e.kind != "adjacent" {
-            return invalid(format!("edge {} – {} has kind '{}', expected access or adjacent", e.source, e.target, e.kind));
+            return invalid(format!(
+                "edge {} – {} has kind '{}', expected access or adjacent",
+                e.source, e.target, e.kind
+            ));
         }
         edges.insert((a.min(b) as Label, a.max(b) as Label));
     }
@@ -293,12 +327,20 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
     }
     for n in &graph.nodes {
         if is_core(&n.kind) && !fp.cores.iter().any(|c| c.id == n.id) {
-            return invalid(format!("core node '{}' has no box in the footprint's cores", n.id));
+            return invalid(format!(
+                "core node '{}' has no box in the footprint's cores",
+                n.id
+            ));
         }
     }
     let free_cells = raster.free.cells.iter().filter(|&&c| c == EMPTY).count();
     let free_area = free_cells as f64 * cell_area;
-    let wanted: f64 = graph.nodes.iter().filter(|n| !is_core(&n.kind)).map(|n| n.area).sum();
+    let wanted: f64 = graph
+        .nodes
+        .iter()
+        .filter(|n| !is_core(&n.kind))
+        .map(|n| n.area)
+        .sum();
     // Targets are scaled to the region being cut, so small overshoots are absorbed; a program far
     // larger than the floor is a planning error worth reporting.
     if wanted > free_area * 1.10 {
@@ -373,8 +415,8 @@ pub fn build_rounds(floor: &Floor) -> Result<Vec<(Label, Vec<Label>)>> {
             }
         }
     }
-    for l in 0..n {
-        if !seen[l] && !floor.is_core(l as Label) {
+    for (l, &reached) in seen.iter().enumerate() {
+        if !reached && !floor.is_core(l as Label) {
             return Err(CoreError::InvalidInput(format!(
                 "room '{}' is not connected to the hub '{}' (cores do not count as connections)",
                 floor.names[l], floor.names[floor.hub as usize]
@@ -438,7 +480,11 @@ pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
     }
     let mut path = vec![centre];
     for &t in targets {
-        let touches = |c: usize| [c - 1, c + 1, c - w, c + w].iter().any(|&nb| grid.cells[nb] == t);
+        let touches = |c: usize| {
+            [c - 1, c + 1, c - w, c + w]
+                .iter()
+                .any(|&nb| grid.cells[nb] == t)
+        };
         if let Some(&end) = order.iter().find(|&&c| touches(c)) {
             let mut c = end;
             while c != centre {
@@ -463,7 +509,12 @@ pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
 }
 
 /// Solve one floor.
-pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, planner: &mut dyn SeedPlanner) -> Result<Solution> {
+pub fn solve_floor(
+    graph: &GraphSpec,
+    fp: &FootprintSpec,
+    opts: &SolveOptions,
+    planner: &mut dyn SeedPlanner,
+) -> Result<Solution> {
     let start = Instant::now();
     let floor = prepare(graph, fp, opts)?;
     let n = floor.names.len();
@@ -472,7 +523,9 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
     } else {
         // flat: every room grows at once over the whole free region (the paper's ablation)
         build_rounds(&floor)?; // still reject disconnected graphs
-        let others: Vec<Label> = (0..n as Label).filter(|&l| l != floor.hub && !floor.is_core(l)).collect();
+        let others: Vec<Label> = (0..n as Label)
+            .filter(|&l| l != floor.hub && !floor.is_core(l))
+            .collect();
         if others.is_empty() {
             vec![]
         } else {
@@ -490,7 +543,11 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
     let cut_opts = CutOptions {
         retries: opts.retries.max(1),
         batch: opts.batch.max(1),
-        gammas: if opts.gammas.is_empty() { vec![1.0] } else { opts.gammas.clone() },
+        gammas: if opts.gammas.is_empty() {
+            vec![1.0]
+        } else {
+            opts.gammas.clone()
+        },
         r_base: opts.r_base,
         k: opts.k,
         seed_separation: opts.seed_separation,
@@ -502,7 +559,9 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
         exhaustive: opts.exhaustive,
     };
     let mut grid = floor.grid.clone();
-    let mut exists: Vec<bool> = (0..n).map(|l| floor.is_core(l as Label) || l == floor.hub as usize).collect();
+    let mut exists: Vec<bool> = (0..n)
+        .map(|l| floor.is_core(l as Label) || l == floor.hub as usize)
+        .collect();
     let has_children: BTreeSet<Label> = rounds.iter().map(|r| r.0).collect();
     let mut diag = Vec::new();
     let mut fallback_used = false;
@@ -535,18 +594,31 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
                 room_type: floor.room_types[c as usize].clone(),
                 target_area: subtree[c as usize],
                 own_area: floor.areas[c as usize],
-                neighbours: floor.neighbours(c).map(|q| floor.names[q as usize].clone()).collect(),
+                neighbours: floor
+                    .neighbours(c)
+                    .map(|q| floor.names[q as usize].clone())
+                    .collect(),
                 attract: attract_of(c),
                 touches_parent: floor.neighbours(c).any(|q| q == *parent),
             })
             .collect();
-        let parent_attract: Vec<Label> = floor.neighbours(*parent).filter(|&q| exists[q as usize]).collect();
-        let reserved = if opts.hierarchical { spine(&region, &grid, &parent_attract) } else { vec![] };
+        let parent_attract: Vec<Label> = floor
+            .neighbours(*parent)
+            .filter(|&q| exists[q as usize])
+            .collect();
+        let reserved = if opts.hierarchical {
+            spine(&region, &grid, &parent_attract)
+        } else {
+            vec![]
+        };
         let req = SeedRequest {
             round: t,
             parent: *parent,
             parent_id: floor.names[*parent as usize].clone(),
-            parent_neighbours: floor.neighbours(*parent).map(|q| floor.names[q as usize].clone()).collect(),
+            parent_neighbours: floor
+                .neighbours(*parent)
+                .map(|q| floor.names[q as usize].clone())
+                .collect(),
             parent_attract,
             children: infos,
             grid: &grid,
@@ -571,13 +643,19 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
                 None => subtree[c as usize] / total * cells,
             };
             used += target;
-            growers.push(Grower { label: c, target: target.max(1.0) });
+            growers.push(Grower {
+                label: c,
+                target: target.max(1.0),
+            });
             planned.push(req.to_solver(seed.centre().unwrap_or_default()));
         }
         let parent_target = (cells - used).max(1.0);
         let remainder = match plan.parent_seed {
             Some(p) => {
-                growers.push(Grower { label: *parent, target: parent_target });
+                growers.push(Grower {
+                    label: *parent,
+                    target: parent_target,
+                });
                 planned.push(req.to_solver(p));
                 None
             }
@@ -591,10 +669,17 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
             .edges
             .iter()
             .copied()
-            .filter(|&(a, b)| exists[a as usize] && exists[b as usize] && (in_round(a) || in_round(b)))
+            .filter(|&(a, b)| {
+                exists[a as usize] && exists[b as usize] && (in_round(a) || in_round(b))
+            })
             .collect();
         let mut final_labels = vec![*parent];
-        final_labels.extend(children.iter().copied().filter(|c| !opts.hierarchical || !has_children.contains(c)));
+        final_labels.extend(
+            children
+                .iter()
+                .copied()
+                .filter(|c| !opts.hierarchical || !has_children.contains(c)),
+        );
         let spec = RoundSpec {
             parent: *parent,
             growers,
@@ -602,7 +687,11 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
             remainder,
             final_labels,
             required,
-            reserved: if remainder.is_some() { reserved.clone() } else { vec![] },
+            reserved: if remainder.is_some() {
+                reserved.clone()
+            } else {
+                vec![]
+            },
             names: floor.names.clone(),
         };
         let outcome = cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, t as u64)?;
@@ -610,7 +699,10 @@ pub fn solve_floor(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions, p
         grid = outcome.grid;
         diag.push(RoundOut {
             parent: floor.names[*parent as usize].clone(),
-            children: children.iter().map(|&c| floor.names[c as usize].clone()).collect(),
+            children: children
+                .iter()
+                .map(|&c| floor.names[c as usize].clone())
+                .collect(),
             retry: outcome.retry,
             fallback: outcome.fallback,
             candidates: outcome.candidates,
@@ -669,7 +761,9 @@ fn output(floor: &Floor, padded: &Grid) -> Solution {
         let Some(p) = polys
             .iter()
             .filter(|p| p.label as usize == l)
-            .max_by(|a, b| vectorise::ring_area(&a.outer).total_cmp(&vectorise::ring_area(&b.outer)))
+            .max_by(|a, b| {
+                vectorise::ring_area(&a.outer).total_cmp(&vectorise::ring_area(&b.outer))
+            })
         else {
             continue;
         };
@@ -678,7 +772,11 @@ fn output(floor: &Floor, padded: &Grid) -> Solution {
             room_type: floor.room_types[l].clone(),
             kind: floor.kinds[l].clone(),
             polygon: vectorise::ring_to_plan(&p.outer, frame),
-            holes: p.holes.iter().map(|h| vectorise::ring_to_plan(h, frame)).collect(),
+            holes: p
+                .holes
+                .iter()
+                .map(|h| vectorise::ring_to_plan(h, frame))
+                .collect(),
             area: count[l] as f64 * cell_area,
             target_area: floor.areas[l],
             centroid: [sum[l][0] / count[l] as f64, sum[l][1] / count[l] as f64],
@@ -739,8 +837,16 @@ pub fn adjacencies(grid: &Grid, names: &[String], cell: f64) -> Vec<AdjacencyOut
         }
     };
     let (w, h) = (grid.w, grid.h);
-    scan(&mut (0..h.saturating_sub(1)).map(|y| (0..w).map(|x| (grid.get(x, y), grid.get(x, y + 1))).collect()));
-    scan(&mut (0..w.saturating_sub(1)).map(|x| (0..h).map(|y| (grid.get(x, y), grid.get(x + 1, y))).collect()));
+    scan(&mut (0..h.saturating_sub(1)).map(|y| {
+        (0..w)
+            .map(|x| (grid.get(x, y), grid.get(x, y + 1)))
+            .collect()
+    }));
+    scan(&mut (0..w.saturating_sub(1)).map(|x| {
+        (0..h)
+            .map(|y| (grid.get(x, y), grid.get(x + 1, y)))
+            .collect()
+    }));
     acc.into_iter()
         .map(|((a, b), (t, l))| AdjacencyOut {
             a: names[a as usize].clone(),
@@ -758,11 +864,20 @@ mod tests {
     use crate::seedplan::HeuristicPlanner;
 
     fn node(id: &str, kind: &str, area: f64) -> NodeSpec {
-        NodeSpec { id: id.into(), kind: kind.into(), area, room_type: None }
+        NodeSpec {
+            id: id.into(),
+            kind: kind.into(),
+            area,
+            room_type: None,
+        }
     }
 
     fn edge(a: &str, b: &str) -> EdgeSpec {
-        EdgeSpec { source: a.into(), target: b.into(), kind: "access".into() }
+        EdgeSpec {
+            source: a.into(),
+            target: b.into(),
+            kind: "access".into(),
+        }
     }
 
     pub(crate) fn apartment() -> (GraphSpec, FootprintSpec) {
@@ -787,7 +902,12 @@ mod tests {
         };
         let fp = FootprintSpec {
             polygon: vec![[0.0, 0.0], [12.0, 0.0], [12.0, 8.0], [0.0, 8.0]],
-            cores: vec![CoreSpec { id: "stair".into(), kind: "stair".into(), x: [0.0, 3.0], y: [0.0, 2.0] }],
+            cores: vec![CoreSpec {
+                id: "stair".into(),
+                kind: "stair".into(),
+                x: [0.0, 3.0],
+                y: [0.0, 2.0],
+            }],
             ..Default::default()
         };
         (graph, fp)
@@ -800,11 +920,15 @@ mod tests {
         let sol = solve_floor(&graph, &fp, &opts, &mut HeuristicPlanner).unwrap();
         assert_eq!(sol.rooms.len(), 7);
         for e in &graph.edges {
-            let adj = sol
-                .adjacencies
-                .iter()
-                .find(|a| (a.a == e.source && a.b == e.target) || (a.a == e.target && a.b == e.source));
-            assert!(adj.is_some_and(|a| a.longest >= 1.0), "edge {}–{} not realised", e.source, e.target);
+            let adj = sol.adjacencies.iter().find(|a| {
+                (a.a == e.source && a.b == e.target) || (a.a == e.target && a.b == e.source)
+            });
+            assert!(
+                adj.is_some_and(|a| a.longest >= 1.0),
+                "edge {}–{} not realised",
+                e.source,
+                e.target
+            );
         }
         let total: f64 = sol.rooms.iter().map(|r| r.area).sum();
         assert!((total - 96.0).abs() < 1e-9);
@@ -815,7 +939,10 @@ mod tests {
     #[test]
     fn flat_mode_solves_too() {
         let (graph, fp) = apartment();
-        let opts = SolveOptions { hierarchical: false, ..Default::default() };
+        let opts = SolveOptions {
+            hierarchical: false,
+            ..Default::default()
+        };
         let sol = solve_floor(&graph, &fp, &opts, &mut HeuristicPlanner).unwrap();
         assert_eq!(sol.diagnostics.rounds.len(), 1);
         assert_eq!(sol.rooms.len(), 7);
@@ -825,19 +952,26 @@ mod tests {
     fn bad_graphs_are_rejected_with_names() {
         let (mut graph, fp) = apartment();
         graph.edges.push(edge("bed1", "ghost"));
-        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        let err =
+            solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
         assert!(err.to_string().contains("ghost"), "{err}");
         let (mut graph, fp) = apartment();
         graph.nodes[1].kind = "main".into();
-        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        let err =
+            solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
         assert!(err.to_string().contains("exactly one 'main'"), "{err}");
         let (mut graph, fp) = apartment();
         graph.edges.retain(|e| e.target != "kitchen");
-        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
-        assert!(err.to_string().contains("'kitchen' is not connected"), "{err}");
+        let err =
+            solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        assert!(
+            err.to_string().contains("'kitchen' is not connected"),
+            "{err}"
+        );
         let (mut graph, fp) = apartment();
         graph.nodes[0].area = 500.0;
-        let err = solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
+        let err =
+            solve_floor(&graph, &fp, &SolveOptions::default(), &mut HeuristicPlanner).unwrap_err();
         assert!(matches!(err, CoreError::InvalidInput(_)), "{err}");
     }
 }

@@ -80,7 +80,14 @@ pub fn measure_contacts(grid: &Grid, region: &Region, index: &[i16], n_round: us
 }
 
 #[inline]
-fn edge_slot(grid: &Grid, region: &Region, c: &Contacts, index: &[i16], i: usize, j: usize) -> usize {
+fn edge_slot(
+    grid: &Grid,
+    region: &Region,
+    c: &Contacts,
+    index: &[i16],
+    i: usize,
+    j: usize,
+) -> usize {
     let (a, b) = (grid.cells[i], grid.cells[j]);
     if a == b || !is_room(a) || !is_room(b) || !(region.inside[i] || region.inside[j]) {
         return usize::MAX;
@@ -109,7 +116,13 @@ fn advance(c: &mut Contacts, slot: usize, run_slot: &mut usize, run: &mut u32) {
 
 /// Number of 4-connected pieces of every round label inside the region, in one pass
 /// (`index[label]` is the label's round position or -1).
-pub fn pieces_all(grid: &Grid, region: &Region, index: &[i16], n_round: usize, s: &mut Scratch) -> Vec<u32> {
+pub fn pieces_all(
+    grid: &Grid,
+    region: &Region,
+    index: &[i16],
+    n_round: usize,
+    s: &mut Scratch,
+) -> Vec<u32> {
     let w = grid.w;
     let epoch = s.bump();
     let mut out = vec![0u32; n_round];
@@ -200,7 +213,9 @@ pub fn min_width_ok(grid: &Grid, region: &Region, label: Label, width: usize) ->
             let v = if x == 0 || y == 0 {
                 1
             } else {
-                1 + sq[y * bw + x - 1].min(sq[(y - 1) * bw + x]).min(sq[(y - 1) * bw + x - 1])
+                1 + sq[y * bw + x - 1]
+                    .min(sq[(y - 1) * bw + x])
+                    .min(sq[(y - 1) * bw + x - 1])
             };
             sq[y * bw + x] = v;
             if v as usize >= width {
@@ -245,7 +260,15 @@ mod tests {
         let mut g = Grid::new(w, h, EMPTY);
         for (r, row) in rows.iter().enumerate() {
             for (x, ch) in row.chars().enumerate() {
-                g.set(x, h - 1 - r, if ch == '#' { OUTSIDE } else { ch.to_digit(10).unwrap() as Label });
+                g.set(
+                    x,
+                    h - 1 - r,
+                    if ch == '#' {
+                        OUTSIDE
+                    } else {
+                        ch.to_digit(10).unwrap() as Label
+                    },
+                );
             }
         }
         pad(&g, OUTSIDE)
@@ -302,7 +325,7 @@ mod tests {
         assert!(!min_width_ok(&g, &r, 1, 2));
         assert!(min_width_ok(&g, &r, 1, 1));
         // a neck one cell wide between two 2x2 blocks
-        let g = parse(&["1101", "1111", "1101"].map(|s| s).as_slice());
+        let g = parse(&["1101", "1111", "1101"]);
         let r = region_of(&g, &[1]);
         assert!(!min_width_ok(&g, &r, 1, 2));
     }

@@ -8,7 +8,9 @@ use mansion_core::raster::{rasterise as core_rasterise, FootprintSpec};
 use mansion_core::region::{pad, unpad};
 use mansion_core::seedplan::{request_json, HeuristicPlanner, SeedPlan, SeedPlanner, SeedRequest};
 use mansion_core::solve::{solve_floor as core_solve, GraphSpec, SolveOptions};
-use mansion_core::vectorise::{mask_outline as core_mask_outline, vectorise as core_vectorise, Ring};
+use mansion_core::vectorise::{
+    mask_outline as core_mask_outline, vectorise as core_vectorise, Ring,
+};
 use mansion_core::CoreError;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
@@ -38,7 +40,10 @@ fn to_py(py: Python<'_>, e: CoreError) -> PyErr {
 }
 
 /// Run core work without the GIL, turning panics into `MansionError`.
-fn guarded<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, CoreError> + Send) -> PyResult<T> {
+fn guarded<T: Send>(
+    py: Python<'_>,
+    f: impl FnOnce() -> Result<T, CoreError> + Send,
+) -> PyResult<T> {
     let out = py.detach(|| catch_unwind(AssertUnwindSafe(f)));
     match out {
         Ok(Ok(v)) => Ok(v),
@@ -49,13 +54,23 @@ fn guarded<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, CoreError> + S
                 .cloned()
                 .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
                 .unwrap_or_else(|| "unknown panic".into());
-            Err(raise(py, "MansionError", format!("internal error in the Rust core: {what}")))
+            Err(raise(
+                py,
+                "MansionError",
+                format!("internal error in the Rust core: {what}"),
+            ))
         }
     }
 }
 
 fn parse<T: serde::de::DeserializeOwned>(py: Python<'_>, what: &str, json: &str) -> PyResult<T> {
-    serde_json::from_str(json).map_err(|e| raise(py, "InvalidInputError", format!("malformed {what} JSON: {e}")))
+    serde_json::from_str(json).map_err(|e| {
+        raise(
+            py,
+            "InvalidInputError",
+            format!("malformed {what} JSON: {e}"),
+        )
+    })
 }
 
 /// A Python seed planner: a callable taking the request JSON and returning the plan JSON.
@@ -73,14 +88,22 @@ impl SeedPlanner for PyPlanner {
                 .map_err(|e| e.value(py).to_string())
         });
         let reply = reply.map_err(CoreError::Planner)?;
-        serde_json::from_str(&reply).map_err(|e| CoreError::Planner(format!("seed plan is not valid JSON for the schema: {e}")))
+        serde_json::from_str(&reply).map_err(|e| {
+            CoreError::Planner(format!("seed plan is not valid JSON for the schema: {e}"))
+        })
     }
 }
 
 /// Solve one floor; arguments and result are JSON (see `_core.pyi`).
 #[pyfunction]
 #[pyo3(signature = (graph_json, footprint_json, options_json, seed_planner=None))]
-fn solve_floor(py: Python<'_>, graph_json: &str, footprint_json: &str, options_json: &str, seed_planner: Option<Py<PyAny>>) -> PyResult<String> {
+fn solve_floor(
+    py: Python<'_>,
+    graph_json: &str,
+    footprint_json: &str,
+    options_json: &str,
+    seed_planner: Option<Py<PyAny>>,
+) -> PyResult<String> {
     let graph: GraphSpec = parse(py, "room graph", graph_json)?;
     let fp: FootprintSpec = parse(py, "footprint", footprint_json)?;
     let opts: SolveOptions = parse(py, "options", options_json)?;
@@ -93,10 +116,17 @@ fn solve_floor(py: Python<'_>, graph_json: &str, footprint_json: &str, options_j
     })
 }
 
+/// A rasterised footprint and its origin.
+type RasterOut<'py> = (Bound<'py, PyArray2<i32>>, (f64, f64));
+
 /// Rasterise a footprint: int32 (rows, cols) with row 0 at the bottom; -1 outside, -2 free, k ≥ 0
 /// inside the k-th core. Returns the grid and its origin.
 #[pyfunction]
-fn rasterise<'py>(py: Python<'py>, footprint_json: &str, cell_size: f64) -> PyResult<(Bound<'py, PyArray2<i32>>, (f64, f64))> {
+fn rasterise<'py>(
+    py: Python<'py>,
+    footprint_json: &str,
+    cell_size: f64,
+) -> PyResult<RasterOut<'py>> {
     let fp: FootprintSpec = parse(py, "footprint", footprint_json)?;
     let r = guarded(py, move || core_rasterise(&fp, cell_size))?;
     let (w, h) = (r.frame.w, r.frame.h);
@@ -131,7 +161,9 @@ fn grid_from(labels: &PyReadonlyArray2<i32>) -> PyResult<Grid> {
             let v = a[[y, x]];
             if v >= 0 {
                 if v as usize >= mansion_core::grid::MAX_ROOMS {
-                    return Err(pyo3::exceptions::PyValueError::new_err(format!("label {v} is too large")));
+                    return Err(pyo3::exceptions::PyValueError::new_err(format!(
+                        "label {v} is too large"
+                    )));
                 }
                 g.set(x, y, v as Label);
             }
@@ -145,7 +177,10 @@ fn grid_from(labels: &PyReadonlyArray2<i32>) -> PyResult<Grid> {
 fn mask_outline(py: Python<'_>, mask: PyReadonlyArray2<'_, u8>) -> PyResult<(PyRing, Vec<PyRing>)> {
     let a = mask.as_array();
     let (h, w) = (a.shape()[0], a.shape()[1]);
-    let flat: Vec<bool> = (0..h).flat_map(|y| (0..w).map(move |x| (y, x))).map(|(y, x)| a[[y, x]] != 0).collect();
+    let flat: Vec<bool> = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (y, x)))
+        .map(|(y, x)| a[[y, x]] != 0)
+        .collect();
     let (outer, holes) = guarded(py, move || core_mask_outline(&flat, w, h))?;
     Ok((ring_py(&outer), holes.iter().map(ring_py).collect()))
 }
@@ -153,12 +188,21 @@ fn mask_outline(py: Python<'_>, mask: PyReadonlyArray2<'_, u8>) -> PyResult<(PyR
 /// Exact polygons of a label grid (row 0 at the bottom; negative = no room):
 /// a list of (label, outer ring, holes) in grid vertex coordinates.
 #[pyfunction]
-fn vectorise(py: Python<'_>, labels: PyReadonlyArray2<'_, i32>) -> PyResult<Vec<(i64, PyRing, Vec<PyRing>)>> {
+fn vectorise(
+    py: Python<'_>,
+    labels: PyReadonlyArray2<'_, i32>,
+) -> PyResult<Vec<(i64, PyRing, Vec<PyRing>)>> {
     let g = grid_from(&labels)?;
     let polys = guarded(py, move || Ok(core_vectorise(&g)))?;
     Ok(polys
         .iter()
-        .map(|p| (p.label as i64, ring_py(&p.outer), p.holes.iter().map(ring_py).collect()))
+        .map(|p| {
+            (
+                p.label as i64,
+                ring_py(&p.outer),
+                p.holes.iter().map(ring_py).collect(),
+            )
+        })
         .collect())
 }
 
@@ -181,18 +225,43 @@ fn grow_candidates<'py>(
     let g = grid_from(&labels)?;
     let s = seeds.as_array();
     if s.shape().len() != 2 || s.shape()[1] != 2 || s.shape()[0] != targets.len()? {
-        return Err(raise(py, "InvalidInputError", "seeds must be (m, 2) with one row per target".into()));
+        return Err(raise(
+            py,
+            "InvalidInputError",
+            "seeds must be (m, 2) with one row per target".into(),
+        ));
     }
     if region < 0 {
-        return Err(raise(py, "InvalidInputError", "region must be a label ≥ 0".into()));
+        return Err(raise(
+            py,
+            "InvalidInputError",
+            "region must be a label ≥ 0".into(),
+        ));
     }
-    let seeds: Vec<[f64; 2]> = (0..s.shape()[0]).map(|k| [s[[k, 0]] + 1.0, s[[k, 1]] + 1.0]).collect();
+    let seeds: Vec<[f64; 2]> = (0..s.shape()[0])
+        .map(|k| [s[[k, 0]] + 1.0, s[[k, 1]] + 1.0])
+        .collect();
     let targets: Vec<f64> = targets.as_array().to_vec();
-    let first = g.cells.iter().filter(|&&c| c != OUTSIDE).max().map_or(0, |&m| m + 1).max(region as Label + 1);
+    let first = g
+        .cells
+        .iter()
+        .filter(|&&c| c != OUTSIDE)
+        .max()
+        .map_or(0, |&m| m + 1)
+        .max(region as Label + 1);
     let (w, h) = (g.w, g.h);
     let grids = guarded(py, move || {
         let padded = pad(&g, OUTSIDE);
-        Ok(grow_batch(&padded, region as Label, first, &seeds, &targets, batch, rng_seed, radius))
+        Ok(grow_batch(
+            &padded,
+            region as Label,
+            first,
+            &seeds,
+            &targets,
+            batch,
+            rng_seed,
+            radius,
+        ))
     })?;
     let mut out = Array3::<i32>::from_elem((grids.len(), h, w), -1);
     for (b, gp) in grids.iter().enumerate() {

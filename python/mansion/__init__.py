@@ -1,0 +1,74 @@
+"""mansion: the single-floor floorplan solver of the MANSION paper, a Rust core under a Python API.
+
+The heart of the API is :func:`solve_floor`, which partitions a footprint into the rooms of a room
+graph, and :func:`plot_layout`, which draws the result.
+"""
+
+from mansion.exceptions import InfeasibleLayoutError, InvalidInputError, MansionError, PlannerError
+from mansion.floorplan import (
+    ChildSeed,
+    EnergyWeights,
+    FixedSeedPlanner,
+    SeedBox,
+    SeedPlan,
+    SeedPlanner,
+    SeedRequest,
+    SolverSettings,
+    solve_floor,
+)
+from mansion.models import (
+    Adjacency,
+    Core,
+    Diagnostics,
+    FloorLayout,
+    Footprint,
+    LabelGrid,
+    LayoutRoom,
+    RoomEdge,
+    RoomGraph,
+    RoomNode,
+    RoundDiagnostics,
+)
+from mansion.plot import plot_layout
+
+
+def _version() -> str:
+    try:
+        from mansion._core import __version__ as core_version
+    except ImportError:
+        # Only a source checkout without a built core gets here; solve_floor will then say how to
+        # build it.
+        return "0+unknown"
+    return str(core_version)
+
+
+__version__ = _version()
+
+__all__ = [
+    "Adjacency",
+    "ChildSeed",
+    "Core",
+    "Diagnostics",
+    "EnergyWeights",
+    "FixedSeedPlanner",
+    "FloorLayout",
+    "Footprint",
+    "InfeasibleLayoutError",
+    "InvalidInputError",
+    "LabelGrid",
+    "LayoutRoom",
+    "MansionError",
+    "PlannerError",
+    "RoomEdge",
+    "RoomGraph",
+    "RoomNode",
+    "RoundDiagnostics",
+    "SeedBox",
+    "SeedPlan",
+    "SeedPlanner",
+    "SeedRequest",
+    "SolverSettings",
+    "__version__",
+    "plot_layout",
+    "solve_floor",
+]

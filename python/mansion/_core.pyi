@@ -1,0 +1,46 @@
+# Type stub of the compiled Rust binding (crates/mansion-py), checked against the built module by
+# `python -m mypy.stubtest mansion._core` (tests/test_stubs.py). All JSON shapes are described in
+# the Python models: mansion.models (graph, footprint, layout) and mansion.floorplan.seeds.
+from collections.abc import Callable
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "grow_candidates"]
+
+__version__: str
+
+def solve_floor(
+    graph_json: str,
+    footprint_json: str,
+    options_json: str,
+    seed_planner: Callable[[str], str] | None = None,
+) -> str:
+    """Solve one floor; returns the FloorLayout JSON. Raises mansion.exceptions errors."""
+
+def rasterise(
+    footprint_json: str, cell_size: float
+) -> tuple[npt.NDArray[np.int32], tuple[float, float]]:
+    """(rows, cols) int32 grid, row 0 at the bottom: -1 outside, -2 free, k >= 0 the k-th core;
+    and the grid's origin in metres."""
+
+def mask_outline(
+    mask: npt.NDArray[np.uint8],
+) -> tuple[list[tuple[int, int]], list[list[tuple[int, int]]]]:
+    """Outer ring and hole rings of a (rows, cols) mask, row 0 at the bottom, in grid vertices."""
+
+def vectorise(
+    labels: npt.NDArray[np.int32],
+) -> list[tuple[int, list[tuple[int, int]], list[list[tuple[int, int]]]]]:
+    """(label, outer ring, holes) for each label >= 0 of an int32 grid, in grid vertices."""
+
+def grow_candidates(
+    labels: npt.NDArray[np.int32],
+    region: int,
+    seeds: npt.NDArray[np.float64],
+    targets: npt.NDArray[np.float64],
+    batch: int,
+    rng_seed: int,
+    radius: float,
+) -> npt.NDArray[np.int32]:
+    """Grow `batch` candidate partitions of `region` from perturbed seeds (for benchmarks)."""

@@ -1,0 +1,97 @@
+"""Configuration of the single-floor solver: the energy weights and the sampling settings."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from mansion._io import atomic_write_text
+from mansion.exceptions import InvalidInputError
+from mansion.models._validation import load_input, validate_input
+
+__all__ = ["EnergyWeights", "SolverSettings"]
+
+
+class EnergyWeights(BaseModel):
+    """Weights of the per-room energy that ranks candidate cuts.
+
+    For a child room r: ``e = ratio·|area−a|/a + seed·z_seed + corner·max(0, n_int−4)
+    − wall·clamp01(wall_contact)``, and a candidate's score is −Σ e.
+
+    The defaults are the values released by the authors of MANSION (CVPR 2026) with their code,
+    which works on a 1 m grid. Other weights can be kept in a JSON file such as
+    ``{"ratio": 6.0, "seed": 0.2, "wall": 0.8, "corner": 3.0}`` and read with
+    :meth:`EnergyWeights.load`; keys left out keep their defaults.
+    """
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    ratio: float = Field(default=6.0, ge=0.0, description="Relative area error.")
+    seed: float = Field(default=0.2, ge=0.0, description="Centroid-to-seed distance (normalised).")
+    wall: float = Field(default=0.8, ge=0.0, description="Contact with the parent's envelope.")
+    corner: float = Field(default=3.0, ge=0.0, description="Interior corners beyond four.")
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> EnergyWeights:
+        """Read weights from a JSON file; every problem is an :class:`InvalidInputError`."""
+        return load_input(cls, path, "energy weights")
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Write the weights as JSON, atomically."""
+        return atomic_write_text(path, self.model_dump_json(indent=2) + "\n")
+
+    @classmethod
+    def parse(cls, data: EnergyWeights | dict[str, Any]) -> EnergyWeights:
+        return validate_input(cls, data, "energy weights")
+
+
+# TODO(measurement): these defaults are placeholders until they are chosen by measurement on
+# held-out plans (accuracy and time per floor); whoever measures them updates the numbers and
+# says where the figures are recorded.
+class SolverSettings(BaseModel):
+    """Sampling settings of the cut rounds (adaptive sampling and the Monte Carlo fallback).
+
+    - ``k``: growth of the base seed-perturbation radius with the child's share of the parent
+      region, ``R⁰ = r_base + k · a_child / |Ω(parent)|`` (in cells);
+    - ``gammas``: the radius multiplier of each retry, ``R_j = γ_j · R⁰`` (non-decreasing; the
+      core reuses the last one for retries beyond the list);
+    - ``seed_separation``: minimum distance between perturbed seeds, in cells;
+    - ``fallback_samples``: candidates drawn by the Monte Carlo fallback when every retry failed;
+    - ``min_width``: narrowest allowed room, in cells (None: no limit).
+    """
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+    k: float = Field(default=8.0, ge=0.0)
+    gammas: list[float] = Field(
+        default_factory=lambda: [1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0]
+    )
+    seed_separation: float = Field(default=2.0, ge=0.0)
+    fallback_samples: int = Field(default=400, ge=0)
+    min_width: int | None = Field(default=None, ge=1)
+
+    @model_validator(mode="after")
+    def _check_gammas(self) -> SolverSettings:
+        if not self.gammas:
+            raise InvalidInputError("gammas must hold at least one radius multiplier")
+        for j, g in enumerate(self.gammas):
+            if g <= 0:
+                raise InvalidInputError(f"gammas[{j}] = {g:g}; every radius multiplier must be > 0")
+            if j and g < self.gammas[j - 1]:
+                raise InvalidInputError(
+                    f"gammas[{j}] = {g:g} is smaller than gammas[{j - 1}] = "
+                    f"{self.gammas[j - 1]:g}; retries widen the search, so gammas must not decrease"
+                )
+        return self
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> SolverSettings:
+        """Read settings from a JSON file; every problem is an :class:`InvalidInputError`."""
+        return load_input(cls, path, "solver settings")
+
+    @classmethod
+    def parse(cls, data: SolverSettings | dict[str, Any]) -> SolverSettings:
+        return validate_input(cls, data, "solver settings")

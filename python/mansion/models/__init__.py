@@ -1,0 +1,39 @@
+"""Pydantic data models shared by every stage: the room graph, the footprint and the solved layout.
+
+Every model round-trips through JSON exactly: ``M.model_validate_json(m.model_dump_json()) == m``.
+"""
+
+from mansion.models.footprint import Core, Footprint, Point, Ring
+from mansion.models.graph import CORE_TYPES, EdgeKind, NodeType, OpenRelation, RoomEdge, RoomGraph, RoomNode
+from mansion.models.layout import (
+    Adjacency,
+    Diagnostics,
+    FloorLayout,
+    LabelGrid,
+    LayoutRoom,
+    RoomEnergy,
+    RoundDiagnostics,
+    RoundEnergy,
+)
+
+__all__ = [
+    "CORE_TYPES",
+    "Adjacency",
+    "Core",
+    "Diagnostics",
+    "EdgeKind",
+    "FloorLayout",
+    "Footprint",
+    "LabelGrid",
+    "LayoutRoom",
+    "NodeType",
+    "OpenRelation",
+    "Point",
+    "Ring",
+    "RoomEdge",
+    "RoomEnergy",
+    "RoomGraph",
+    "RoomNode",
+    "RoundDiagnostics",
+    "RoundEnergy",
+]

@@ -1,0 +1,116 @@
+"""Seed planners and the callback wrapper the Rust solver calls (no solver needed)."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import pytest
+
+from mansion import FixedSeedPlanner, PlannerError, SeedPlan, SeedPlanner, SeedRequest
+from mansion.floorplan import ChildSeed, SeedBox, planner_callback
+
+REQUEST: dict[str, Any] = {
+    "round": 2,
+    "parent": "hall",
+    "cell_size": 0.5,
+    "region": {
+        "polygon": [[0.0, 0.0], [6.0, 0.0], [6.0, 4.0], [0.0, 4.0]],
+        "holes": [],
+        "area": 24.0,
+        "cells": 96,
+    },
+    "layout": {"rooms": [{"id": "living", "polygon": [[6, 0], [9, 0], [9, 4], [6, 4]], "holes": []}]},
+    "children": [
+        {"id": "bath", "room_type": "bathroom", "target_area": 6.0, "own_area": 6.0, "neighbours": ["hall"]},
+        {"id": "store", "room_type": "storage", "target_area": 4.0, "own_area": 4.0, "neighbours": ["hall"]},
+    ],
+    "parent_neighbours": ["living", "bath", "store"],
+}
+REQUEST_JSON = json.dumps(REQUEST)
+
+
+def test_fixed_planner_through_the_callback() -> None:
+    planner = FixedSeedPlanner({"bath": (1.0, 1.0), "store": (5, 3), "hall": (3.0, 2.0)})
+    assert isinstance(planner, SeedPlanner)
+    out = json.loads(planner_callback(planner)(REQUEST_JSON))
+    assert out == {
+        "seeds": {
+            "bath": {"point": [1.0, 1.0], "fraction": None},
+            "store": {"point": [5.0, 3.0], "fraction": None},
+        },
+        "parent_seed": [3.0, 2.0],
+    }
+
+
+def test_fixed_planner_without_parent_point() -> None:
+    planner = FixedSeedPlanner({"bath": (1.0, 1.0), "store": (5.0, 3.0)})
+    out = json.loads(planner_callback(planner)(REQUEST_JSON))
+    assert out["parent_seed"] is None
+
+
+def test_fixed_planner_missing_child_is_a_planner_error() -> None:
+    callback = planner_callback(FixedSeedPlanner({"bath": (1.0, 1.0)}))
+    with pytest.raises(PlannerError, match="'store'"):
+        callback(REQUEST_JSON)
+
+
+def test_box_seeds_and_fractions_use_the_contract_shape() -> None:
+    def plan(request: SeedRequest) -> SeedPlan:
+        assert request.parent == "hall" and request.region.cells == 96
+        return SeedPlan(
+            seeds={
+                "bath": ChildSeed(box=SeedBox(x=(0.0, 2.0), y=(0.0, 3.0)), fraction=0.25),
+                "store": ChildSeed(point=(5.0, 3.0), fraction=0.2),
+            }
+        )
+
+    out = json.loads(planner_callback(plan)(REQUEST_JSON))
+    assert out == {
+        "seeds": {
+            "bath": {"box": {"x": [0.0, 2.0], "y": [0.0, 3.0]}, "fraction": 0.25},
+            "store": {"point": [5.0, 3.0], "fraction": 0.2},
+        },
+        "parent_seed": None,
+    }
+
+
+def test_a_plain_dict_plan_is_accepted() -> None:
+    def plan(request: SeedRequest) -> dict[str, Any]:
+        return {"seeds": {c.id: {"point": [1, 1]} for c in request.children}}
+
+    out = json.loads(planner_callback(plan)(REQUEST_JSON))
+    assert set(out["seeds"]) == {"bath", "store"}
+
+
+def test_planner_exception_becomes_planner_error() -> None:
+    class Broken:
+        def plan(self, request: SeedRequest) -> SeedPlan:
+            raise RuntimeError("the model returned no JSON")
+
+    with pytest.raises(PlannerError, match="the model returned no JSON") as info:
+        planner_callback(Broken())(REQUEST_JSON)
+    assert "round 2" in str(info.value) and "'hall'" in str(info.value)
+    assert isinstance(info.value.__cause__, RuntimeError)
+
+
+@pytest.mark.parametrize(
+    ("plan", "match"),
+    [
+        ({"seeds": {"bath": {"point": [1, 1]}, "store": {"point": [2, 2]}, "attic": {"point": [0, 0]}}}, "'attic'"),
+        ({"seeds": {"bath": {"point": [1, 1]}}}, "'store'"),
+        ({"seeds": {"bath": {"point": [1, 1], "box": {"x": [0, 1], "y": [0, 1]}}, "store": {"point": [2, 2]}}}, "exactly one"),
+        ({"seeds": {"bath": {"point": [1, 1], "fraction": 3.0}, "store": {"point": [2, 2]}}}, "fraction"),
+        ({"seeds": {"bath": {"box": {"x": [2, 1], "y": [0, 1]}}, "store": {"point": [2, 2]}}}, "inverted"),
+        ({"nothing": True}, "seeds"),
+    ],
+)
+def test_bad_plans_are_planner_errors(plan: dict[str, Any], match: str) -> None:
+    with pytest.raises(PlannerError, match=match):
+        planner_callback(lambda request: plan)(REQUEST_JSON)
+
+
+def test_malformed_request_is_a_planner_error() -> None:
+    callback = planner_callback(FixedSeedPlanner({}))
+    with pytest.raises(PlannerError, match="malformed seed request"):
+        callback('{"round": 1}')
