@@ -440,33 +440,11 @@ pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
         return vec![];
     }
     let n = region.inside.len();
-    // distance to the envelope, to find the deepest cell
-    let mut depth = vec![u32::MAX; n];
     let mut queue = VecDeque::new();
-    for &c in &region.cells {
-        if region.on_envelope(c as usize) {
-            depth[c as usize] = 0;
-            queue.push_back(c as usize);
-        }
-    }
-    while let Some(c) = queue.pop_front() {
-        for nb in [c - 1, c + 1, c - w, c + w] {
-            if region.inside[nb] && depth[nb] == u32::MAX {
-                depth[nb] = depth[c] + 1;
-                queue.push_back(nb);
-            }
-        }
-    }
-    let centre = region
-        .cells
-        .iter()
-        .map(|&c| c as usize)
-        .max_by(|&a, &b| depth[a].cmp(&depth[b]).then(b.cmp(&a)))
-        .unwrap_or(region.cells[0] as usize);
+    let centre = spine_centre(region);
     // breadth-first tree from the centre; each target is reached along its tree path
     let mut prev = vec![usize::MAX; n];
     prev[centre] = centre;
-    queue.clear();
     queue.push_back(centre);
     let mut order = Vec::new();
     while let Some(c) = queue.pop_front() {
@@ -506,6 +484,37 @@ pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
     out.sort_unstable();
     out.dedup();
     out
+}
+
+fn deepest_cell(region: &Region, depth: &[u32]) -> usize {
+    region
+        .cells
+        .iter()
+        .map(|&c| c as usize)
+        .max_by(|&a, &b| depth[a].cmp(&depth[b]).then(b.cmp(&a)))
+        .unwrap_or(region.cells[0] as usize)
+}
+
+/// The region cell farthest from the region's envelope (where the spine starts).
+pub fn spine_centre(region: &Region) -> usize {
+    let w = region.w;
+    let mut depth = vec![u32::MAX; region.inside.len()];
+    let mut queue = VecDeque::new();
+    for &c in &region.cells {
+        if region.on_envelope(c as usize) {
+            depth[c as usize] = 0;
+            queue.push_back(c as usize);
+        }
+    }
+    while let Some(c) = queue.pop_front() {
+        for nb in [c - 1, c + 1, c - w, c + w] {
+            if region.inside[nb] && depth[nb] == u32::MAX {
+                depth[nb] = depth[c] + 1;
+                queue.push_back(nb);
+            }
+        }
+    }
+    deepest_cell(region, &depth)
 }
 
 /// Solve one floor.
@@ -694,7 +703,34 @@ pub fn solve_floor(
             },
             names: floor.names.clone(),
         };
-        let outcome = cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, t as u64)?;
+        let outcome = match cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, t as u64) {
+            Ok(o) => o,
+            // When the leftover cannot serve as the parent, let the parent grow from the deepest
+            // point of its region like its children (the end of the spine is that point) and try
+            // the whole budget once more before giving up.
+            Err(first) if spec.remainder.is_some() && !reserved.is_empty() => {
+                let mut grown = spec.clone();
+                let (label, target) = spec.remainder.unwrap_or((*parent, 1.0));
+                let w = grid.w;
+                let c = spine_centre(&region);
+                grown.growers.push(Grower { label, target });
+                grown
+                    .planned
+                    .push([(c % w) as f64 + 0.5, (c / w) as f64 + 0.5]);
+                grown.remainder = None;
+                grown.reserved = vec![];
+                cut::cut(
+                    &grid,
+                    &floor.walls,
+                    &grown,
+                    &cut_opts,
+                    n,
+                    t as u64 + (1 << 32),
+                )
+                .map_err(|_| first)?
+            }
+            Err(e) => return Err(e),
+        };
         fallback_used |= outcome.fallback;
         grid = outcome.grid;
         diag.push(RoundOut {
