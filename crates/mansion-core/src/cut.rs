@@ -109,6 +109,7 @@ type Scored = Result<(f64, Grid, Vec<RoomFeatures>), Reject>;
 /// Why a candidate failed the filter.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Reject {
+    NoSeeds,
     Unfilled,
     Missing(Label),
     Disconnected(Label),
@@ -126,6 +127,7 @@ impl Reject {
                 .unwrap_or_else(|| format!("#{l}"))
         };
         match self {
+            Reject::NoSeeds => "no free cells left for every seed".into(),
             Reject::Unfilled => "cells left unassigned".into(),
             Reject::Missing(l) => format!("room '{}' vanished", n(l)),
             Reject::Disconnected(l) => format!("room '{}' in several pieces", n(l)),
@@ -410,7 +412,7 @@ impl<'a> Prepared<'a> {
                     let mut rng = self.rng(retry, i as u64);
                     match seeder(i, &mut rng) {
                         Some(seeds) => self.candidate(&seeds, &mut rng, s),
-                        None => Err(Reject::Unfilled),
+                        None => Err(Reject::NoSeeds),
                     }
                 },
             )
