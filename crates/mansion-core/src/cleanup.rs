@@ -260,28 +260,11 @@ pub fn clean(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scratch) -
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::region::pad;
+    use crate::region::parse_rows;
 
     /// Parse rows written top row first (as they read), `.` empty, `#` outside, digits rooms.
     fn parse(rows: &[&str]) -> Grid {
-        let h = rows.len();
-        let w = rows[0].len();
-        let mut g = Grid::new(w, h, EMPTY);
-        for (r, row) in rows.iter().enumerate() {
-            for (x, ch) in row.chars().enumerate() {
-                let y = h - 1 - r;
-                g.set(
-                    x,
-                    y,
-                    match ch {
-                        '.' => EMPTY,
-                        '#' => OUTSIDE,
-                        d => d.to_digit(10).unwrap() as Label,
-                    },
-                );
-            }
-        }
-        pad(&g, OUTSIDE)
+        parse_rows(rows)
     }
 
     fn region_all(g: &Grid) -> Region {

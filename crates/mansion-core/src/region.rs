@@ -95,6 +95,27 @@ pub fn unpad(grid: &Grid) -> Grid {
     out
 }
 
+/// A padded grid from rows written top row first (as they read): `.` empty, `#` outside, digits
+/// rooms. For unit tests across the crate.
+#[cfg(test)]
+pub fn parse_rows(rows: &[&str]) -> Grid {
+    use crate::grid::{EMPTY, OUTSIDE};
+    let h = rows.len();
+    let w = rows[0].len();
+    let mut g = Grid::new(w, h, EMPTY);
+    for (r, row) in rows.iter().enumerate() {
+        for (x, ch) in row.chars().enumerate() {
+            let l = match ch {
+                '.' => EMPTY,
+                '#' => OUTSIDE,
+                d => d.to_digit(10).expect("test grid cell") as Label,
+            };
+            g.set(x, h - 1 - r, l);
+        }
+    }
+    pad(&g, OUTSIDE)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -252,26 +252,10 @@ pub fn min_width_ok(grid: &Grid, region: &Region, label: Label, width: usize) ->
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::region::pad;
+    use crate::region::parse_rows;
 
     fn parse(rows: &[&str]) -> Grid {
-        let h = rows.len();
-        let w = rows[0].len();
-        let mut g = Grid::new(w, h, EMPTY);
-        for (r, row) in rows.iter().enumerate() {
-            for (x, ch) in row.chars().enumerate() {
-                g.set(
-                    x,
-                    h - 1 - r,
-                    if ch == '#' {
-                        OUTSIDE
-                    } else {
-                        ch.to_digit(10).unwrap() as Label
-                    },
-                );
-            }
-        }
-        pad(&g, OUTSIDE)
+        parse_rows(rows)
     }
 
     fn region_of(g: &Grid, labels: &[Label]) -> Region {
