@@ -216,7 +216,7 @@ def report(res: dict[str, Any]) -> None:
         for row in (cols, *cells):
             print("  ".join(v.ljust(wd) if i == 0 else v.rjust(wd) for i, (v, wd) in enumerate(zip(row, widths))))
     load = res["machine"]["loadavg_at_start"][0]
-    print(f"load average at start {load:.2f} on {res['machine']['cpus']} CPUs" + (" — busy machine, timings are noisy" if load > 0.5 else ""))
+    print(f"load average at start {load:.2f} on {res['machine']['cpus']} CPUs" + (" (machine not idle: timings may be noisy)" if load > 0.25 * (res["machine"]["cpus"] or 1) else ""))
     print("ref ÷ this: reference µs per candidate over this implementation's; area err: mean |area - target| / target")
     for key, title in (("rust_1_thread", "Rust 1 thread"), ("rust", "Rust default"), ("reference", "reference")):
         if res.get(key):
@@ -228,7 +228,7 @@ def report(res: dict[str, Any]) -> None:
             )
     if scaled:
         print(
-            f"note: the reference would take over {REFERENCE_BUDGET_S:.0f} s for {res['batch']} candidates; "
+            f"note: the reference would take over {REFERENCE_BUDGET_S:g} s for {res['batch']} candidates; "
             f"it was timed on {ref['candidates']} candidates and is reported per candidate."
         )
 
