@@ -66,6 +66,34 @@ impl Region {
         [i - 1, i + 1, i - self.w, i + self.w]
     }
 
+    /// Multi-source breadth-first distance (in cell steps, inside the region) from `sources` (flat
+    /// indices), indexed like `cells`; cells the sources cannot reach get `w + h`.
+    pub fn distances(&self, sources: &[usize]) -> Vec<u32> {
+        let w = self.w;
+        let mut dist = vec![u32::MAX; self.inside.len()];
+        let mut queue = std::collections::VecDeque::new();
+        for &s in sources {
+            if dist[s] == u32::MAX {
+                dist[s] = 0;
+                queue.push_back(s);
+            }
+        }
+        while let Some(c) = queue.pop_front() {
+            let d = dist[c] + 1;
+            for n in [c - 1, c + 1, c - w, c + w] {
+                if self.inside[n] && dist[n] == u32::MAX {
+                    dist[n] = d;
+                    queue.push_back(n);
+                }
+            }
+        }
+        let far = (self.w + self.h) as u32;
+        self.cells
+            .iter()
+            .map(|&c| dist[c as usize].min(far))
+            .collect()
+    }
+
     /// Is the region cell `i` on the region's envelope (a 4-neighbour outside the region)?
     #[inline]
     pub fn on_envelope(&self, i: usize) -> bool {

@@ -203,9 +203,9 @@ impl SeedPlanner for HeuristicPlanner {
         } else {
             exterior
         };
-        let d_env = bfs(region, &envelope_sources);
+        let d_env = region.distances(&envelope_sources);
         // children that open onto the parent should hug its spine without sitting on it
-        let d_spine = (!req.reserved.is_empty()).then(|| bfs(region, req.reserved));
+        let d_spine = (!req.reserved.is_empty()).then(|| region.distances(req.reserved));
         let mut fields: HashMap<Label, Vec<u32>> = HashMap::new();
         let mut field = |l: Label| -> Vec<u32> {
             fields
@@ -220,7 +220,7 @@ impl SeedPlanner for HeuristicPlanner {
                                 .any(|&n| grid.cells[n] == l)
                         })
                         .collect();
-                    bfs(region, &src)
+                    region.distances(&src)
                 })
                 .clone()
         };
@@ -322,35 +322,6 @@ impl SeedPlanner for HeuristicPlanner {
         }
         Ok(plan)
     }
-}
-
-/// Multi-source breadth-first distance inside the region, indexed like `region.cells`; cells the
-/// sources cannot reach get a large distance.
-fn bfs(region: &Region, sources: &[usize]) -> Vec<u32> {
-    let w = region.w;
-    let mut dist_grid = vec![u32::MAX; region.inside.len()];
-    let mut queue = std::collections::VecDeque::new();
-    for &s in sources {
-        if dist_grid[s] == u32::MAX {
-            dist_grid[s] = 0;
-            queue.push_back(s);
-        }
-    }
-    while let Some(c) = queue.pop_front() {
-        let d = dist_grid[c] + 1;
-        for n in [c - 1, c + 1, c - w, c + w] {
-            if region.inside[n] && dist_grid[n] == u32::MAX {
-                dist_grid[n] = d;
-                queue.push_back(n);
-            }
-        }
-    }
-    let far = (region.w + region.h) as u32;
-    region
-        .cells
-        .iter()
-        .map(|&c| dist_grid[c as usize].min(far))
-        .collect()
 }
 
 /// The request as JSON for planners outside Rust (the Python seed planners): the region and the

@@ -486,35 +486,20 @@ pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
     out
 }
 
-fn deepest_cell(region: &Region, depth: &[u32]) -> usize {
-    region
+/// The region cell farthest from the region's envelope (where the spine starts); ties go to the
+/// lowest cell index.
+pub fn spine_centre(region: &Region) -> usize {
+    let envelope: Vec<usize> = region
         .cells
         .iter()
         .map(|&c| c as usize)
+        .filter(|&c| region.on_envelope(c))
+        .collect();
+    let depth = region.distances(&envelope);
+    let best = (0..region.len())
         .max_by(|&a, &b| depth[a].cmp(&depth[b]).then(b.cmp(&a)))
-        .unwrap_or(region.cells[0] as usize)
-}
-
-/// The region cell farthest from the region's envelope (where the spine starts).
-pub fn spine_centre(region: &Region) -> usize {
-    let w = region.w;
-    let mut depth = vec![u32::MAX; region.inside.len()];
-    let mut queue = VecDeque::new();
-    for &c in &region.cells {
-        if region.on_envelope(c as usize) {
-            depth[c as usize] = 0;
-            queue.push_back(c as usize);
-        }
-    }
-    while let Some(c) = queue.pop_front() {
-        for nb in [c - 1, c + 1, c - w, c + w] {
-            if region.inside[nb] && depth[nb] == u32::MAX {
-                depth[nb] = depth[c] + 1;
-                queue.push_back(nb);
-            }
-        }
-    }
-    deepest_cell(region, &depth)
+        .unwrap_or(0);
+    region.cells[best] as usize
 }
 
 /// Solve one floor.

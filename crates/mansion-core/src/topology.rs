@@ -151,33 +151,6 @@ pub fn pieces_all(
     out
 }
 
-/// Number of 4-connected pieces of `label` inside the region and its cell count.
-pub fn pieces(grid: &Grid, region: &Region, label: Label, s: &mut Scratch) -> (usize, usize) {
-    let w = grid.w;
-    let epoch = s.bump();
-    let (mut n, mut cells) = (0, 0);
-    for &start in &region.cells {
-        let start = start as usize;
-        if grid.cells[start] != label || s.stamp[start] == epoch {
-            continue;
-        }
-        n += 1;
-        s.queue.clear();
-        s.queue.push(start);
-        s.stamp[start] = epoch;
-        while let Some(c) = s.queue.pop() {
-            cells += 1;
-            for nb in [c - 1, c + 1, c - w, c + w] {
-                if grid.cells[nb] == label && s.stamp[nb] != epoch && region.inside[nb] {
-                    s.stamp[nb] = epoch;
-                    s.queue.push(nb);
-                }
-            }
-        }
-    }
-    (n, cells)
-}
-
 /// Does `label` own the cells on both sides of a fixed wall somewhere in the region?
 pub fn straddles(grid: &Grid, region: &Region, walls: &Walls, label: Label) -> bool {
     if !walls.any {
@@ -294,8 +267,9 @@ mod tests {
         let g = parse(&["1221", "1221"]);
         let r = region_of(&g, &[1, 2]);
         let mut s = Scratch::new(g.cells.len());
-        assert_eq!(pieces(&g, &r, 1, &mut s), (2, 4));
-        assert_eq!(pieces(&g, &r, 2, &mut s), (1, 4));
+        let index = [-1i16, 0, 1];
+        assert_eq!(pieces_all(&g, &r, &index, 2, &mut s), vec![2, 1]);
+        assert_eq!((g.count(1), g.count(2)), (4, 4));
     }
 
     #[test]
