@@ -94,6 +94,7 @@ LAYOUT_JSON: dict[str, Any] = {
                         "office": {
                             "ratio": 0.857,
                             "seed": 0.0,
+                            "drift": 0.0,
                             "wall": 0.8,
                             "corner": 0.0,
                             "energy": 0.057,
@@ -104,6 +105,7 @@ LAYOUT_JSON: dict[str, Any] = {
             }
         ],
         "fallback_used": False,
+        "backtracks": 0,
         "seconds": 0.003,
     },
 }
@@ -126,6 +128,7 @@ SEED_REQUEST_JSON: dict[str, Any] = {
             "target_area": 4.5,
             "own_area": 3.5,
             "neighbours": ["hall", "store"],
+            "descendants": [{"id": "store", "area": 1.5}],
         }
     ],
     "parent_neighbours": ["office", "stair_1"],

@@ -8,7 +8,7 @@
 use crate::cleanup::{self, Scratch};
 use crate::energy::{self, RoomFeatures, Weights};
 use crate::grid::{Grid, Label, Walls, EMPTY};
-use crate::growth::{self, Grower};
+use crate::growth::{self, Grower, GrowthRule};
 use crate::region::Region;
 use crate::topology;
 use rand::{Rng, SeedableRng};
@@ -63,6 +63,8 @@ pub struct CutOptions {
     /// Run every retry and keep the best survivor overall, instead of stopping at the first retry
     /// with a survivor (the paper's rule). Costs the whole budget; benchmarks use it.
     pub exhaustive: bool,
+    /// Side choice of the rectangular growth phase.
+    pub growth: GrowthRule,
 }
 
 use serde::{Deserialize, Serialize};
@@ -82,6 +84,7 @@ impl Default for CutOptions {
             weights: Weights::default(),
             rng_seed: 0,
             exhaustive: false,
+            growth: GrowthRule::default(),
         }
     }
 }
@@ -325,7 +328,14 @@ impl<'a> Prepared<'a> {
         s: &mut Scratch,
     ) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
         let mut grid = self.base.clone();
-        growth::grow(&mut grid, self.walls, &self.spec.growers, seeds, rng);
+        growth::grow(
+            &mut grid,
+            self.walls,
+            &self.spec.growers,
+            seeds,
+            self.opts.growth,
+            rng,
+        );
         self.finish(grid, s)
     }
 
@@ -597,7 +607,7 @@ pub fn grow_batch(
                 let mut rng = p.rng(0, i as u64);
                 let mut g = p.base.clone();
                 if let Some(seeds) = p.sample_seeds(&mut rng, Some(&radii)) {
-                    growth::grow(&mut g, &walls, &spec.growers, &seeds, &mut rng);
+                    growth::grow(&mut g, &walls, &spec.growers, &seeds, opts.growth, &mut rng);
                     cleanup::assign_remainder(&mut g, &p.region, &walls, region, s);
                     cleanup::clean(&mut g, &p.region, &walls, s);
                 }

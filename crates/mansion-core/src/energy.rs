@@ -1,7 +1,10 @@
 //! The paper's energy: per-room features of a candidate and their weighted sum.
 //!
-//! `e(r) = w_ratio·|area − a|/a + w_seed·z_seed + w_corner·max(0, n_int − 4) − w_wall·clamp01(wall)`
-//! where `z_seed` is the centroid-to-seed distance min–max normalised over the candidate's rooms,
+//! `e(r) = w_ratio·|area − a|/a + w_seed·z_seed + w_drift·d/√a + w_corner·max(0, n_int − 4)
+//!        − w_wall·clamp01(wall)`
+//! where `z_seed` is the centroid-to-seed distance `d` min–max normalised over the candidate's rooms
+//! (the paper's term), `d/√a` the same distance in units of the room's own size (our addition: the
+//! min–max form always spans 0..1 within a candidate, so it barely tells candidates apart),
 //! `wall` is the share of the room's perimeter on the parent region's envelope (a fraction, so the
 //! clamp means something) and `n_int` counts the room's corners strictly inside the parent region.
 //! The weights come from Python; the core only computes.
@@ -14,6 +17,9 @@ use serde::{Deserialize, Serialize};
 pub struct Weights {
     pub ratio: f64,
     pub seed: f64,
+    /// Absent from older weight files: 0, the paper's energy.
+    #[serde(default)]
+    pub drift: f64,
     pub wall: f64,
     pub corner: f64,
 }
@@ -24,6 +30,7 @@ impl Default for Weights {
         Weights {
             ratio: 6.0,
             seed: 0.2,
+            drift: 0.0,
             wall: 0.8,
             corner: 3.0,
         }
@@ -43,6 +50,8 @@ pub struct RoomFeatures {
     pub seed_dist: f64,
     /// Min–max normalised seed distance.
     pub seed: f64,
+    /// Seed distance over √target: scale-free drift of the room from its seed.
+    pub drift: f64,
     /// Share of the perimeter on the parent region's envelope, in [0, 1].
     pub wall: f64,
     /// max(0, interior corners − 4).
@@ -97,6 +106,7 @@ pub fn features(
         f.ratio = (area[k] as f64 - targets[k]).abs() / targets[k].max(1e-9);
         if let Some(s) = seeds[k] {
             f.seed_dist = ((f.centroid[0] - s[0]).powi(2) + (f.centroid[1] - s[1]).powi(2)).sqrt();
+            f.drift = f.seed_dist / targets[k].max(1.0).sqrt();
         }
         f.wall = if perim[k] > 0 {
             (env[k] as f64 / perim[k] as f64).clamp(0.0, 1.0)
@@ -172,7 +182,8 @@ fn interior_corners(grid: &Grid, region: &Region, index: &[i16], n: usize) -> Ve
 pub fn score(feats: &mut [RoomFeatures], w: &Weights) -> f64 {
     let mut total = 0.0;
     for f in feats.iter_mut() {
-        f.energy = w.ratio * f.ratio + w.seed * f.seed + w.corner * f.corner - w.wall * f.wall;
+        f.energy = w.ratio * f.ratio + w.seed * f.seed + w.drift * f.drift + w.corner * f.corner
+            - w.wall * f.wall;
         total += f.energy;
     }
     total
@@ -246,12 +257,19 @@ mod tests {
         let mut f = vec![RoomFeatures {
             ratio: 0.5,
             seed: 1.0,
+            drift: 0.5,
             wall: 0.25,
             corner: 2.0,
             ..Default::default()
         }];
         let e = score(&mut f, &Weights::default());
         assert!((e - (3.0 + 0.2 + 6.0 - 0.2)).abs() < 1e-12);
+        let w = Weights {
+            drift: 2.0,
+            ..Weights::default()
+        };
+        let e = score(&mut f, &w);
+        assert!((e - (3.0 + 0.2 + 1.0 + 6.0 - 0.2)).abs() < 1e-12);
         assert_eq!(f[0].energy, e);
     }
 }

@@ -6,6 +6,21 @@
 
 use crate::grid::{Grid, Label, Walls, EMPTY};
 use rand::Rng;
+use serde::{Deserialize, Serialize};
+
+/// Which side a room grows next in the rectangular phase.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum GrowthRule {
+    /// The side that keeps the room's centre closest to its seed (ties: the longest side). A room
+    /// stays centred on its seed until a wall or a neighbour stops it on one side, then grows along
+    /// the other axis; so a seed given as a room's centroid yields a room whose centroid is near
+    /// it, which the longest-side rule does not (its rooms drift toward open space).
+    #[default]
+    Balanced,
+    /// The longest free side first (Lopes et al. 2010), ties at random.
+    Longest,
+}
 
 /// One room growing in a round.
 #[derive(Debug, Clone, Copy)]
@@ -156,6 +171,7 @@ pub fn grow<R: Rng>(
     walls: &Walls,
     growers: &[Grower],
     seeds: &[usize],
+    rule: GrowthRule,
     rng: &mut R,
 ) -> Vec<usize> {
     let (w, h) = (grid.w, grid.h);
@@ -245,6 +261,28 @@ pub fn grow<R: Rng>(
         if sides.is_empty() {
             active.swap_remove(pos);
             continue;
+        }
+        if rule == GrowthRule::Balanced {
+            // Keep only the sides whose new bounding box is centred closest to the seed cell; the
+            // squared offsets are in half cells, so they compare exactly as integers.
+            let (sx, sy) = ((seeds[k] % w) as i64, (seeds[k] / w) as i64);
+            let off = |side: u8| -> i64 {
+                let (a, b, c, d) = (x0 as i64, y0 as i64, x1 as i64, y1 as i64);
+                let (a, b, c, d) = match side {
+                    0 => (a - 1, b, c, d),
+                    1 => (a, b, c + 1, d),
+                    2 => (a, b - 1, c, d),
+                    _ => (a, b, c, d + 1),
+                };
+                let (dx, dy) = (a + c - 2 * sx, b + d - 2 * sy);
+                dx * dx + dy * dy
+            };
+            // Among equally centred sides, prefer an axis still open at both ends: a step that
+            // cannot be balanced by its opposite side later pulls the room off its seed for good.
+            let open = sides.iter().fold(0u8, |m, s| m | 1 << s.1);
+            let key = |side: u8| (off(side), u8::from(open & 1 << (side ^ 1) == 0));
+            let closest = sides.iter().map(|s| key(s.1)).min().unwrap_or((0, 0));
+            sides.retain(|s| key(s.1) == closest);
         }
         let best = sides.iter().map(|s| s.0).max().unwrap_or(0);
         let n_ties = sides.iter().filter(|s| s.0 == best).count();
@@ -501,24 +539,84 @@ mod tests {
         g
     }
 
+    const RULES: [GrowthRule; 2] = [GrowthRule::Balanced, GrowthRule::Longest];
+
     #[test]
     fn single_room_grows_to_its_target_as_a_rectangle() {
-        let mut g = setup(10, 10);
+        for rule in RULES {
+            let mut g = setup(10, 10);
+            let walls = Walls::none(g.w, g.h);
+            let mut rng = Xoshiro256PlusPlus::seed_from_u64(1);
+            let seed = g.idx(5, 5);
+            let area = grow(
+                &mut g,
+                &walls,
+                &[Grower {
+                    label: 1,
+                    target: 20.0,
+                }],
+                &[seed],
+                rule,
+                &mut rng,
+            );
+            assert!((18..=22).contains(&area[0]), "{rule:?}: area {}", area[0]);
+            assert_eq!(g.count(1), area[0]);
+        }
+    }
+
+    /// Centroid and bounding box (x0, y0, x1, y1) of a label's cells.
+    fn shape_of(g: &Grid, label: Label) -> ([f64; 2], (usize, usize, usize, usize)) {
+        let (mut sx, mut sy, mut n) = (0.0, 0.0, 0.0);
+        let mut bb = (usize::MAX, usize::MAX, 0, 0);
+        for y in 0..g.h {
+            for x in 0..g.w {
+                if g.get(x, y) == label {
+                    sx += x as f64;
+                    sy += y as f64;
+                    n += 1.0;
+                    bb = (bb.0.min(x), bb.1.min(y), bb.2.max(x), bb.3.max(y));
+                }
+            }
+        }
+        ([sx / n, sy / n], bb)
+    }
+
+    /// One room grown by the balanced rule on an open `w × h` region.
+    fn grow_balanced(w: usize, h: usize, seed: (usize, usize), target: f64) -> Grid {
+        let mut g = setup(w, h);
         let walls = Walls::none(g.w, g.h);
-        let mut rng = Xoshiro256PlusPlus::seed_from_u64(1);
-        let seed = g.idx(5, 5);
-        let area = grow(
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(7);
+        let seed = g.idx(seed.0, seed.1);
+        let grower = Grower { label: 1, target };
+        grow(
             &mut g,
             &walls,
-            &[Grower {
-                label: 1,
-                target: 20.0,
-            }],
+            &[grower],
             &[seed],
+            GrowthRule::Balanced,
             &mut rng,
         );
-        assert!((18..=22).contains(&area[0]), "area {}", area[0]);
-        assert_eq!(g.count(1), area[0]);
+        g
+    }
+
+    #[test]
+    fn balanced_growth_stays_centred_on_its_seed_in_open_space() {
+        let g = grow_balanced(21, 21, (11, 11), 49.0);
+        // a 7×7 square around the seed
+        let (c, bb) = shape_of(&g, 1);
+        assert_eq!(bb, (8, 8, 14, 14));
+        assert_eq!(c, [11.0, 11.0]);
+    }
+
+    #[test]
+    fn balanced_growth_stopped_by_a_wall_grows_along_it() {
+        // The seed sits 2 cells from the region's left edge: the room takes the 5 columns the seed
+        // centres and grows up and down for the rest, keeping its centroid on the seed.
+        let g = grow_balanced(20, 20, (3, 10), 55.0);
+        let (c, bb) = shape_of(&g, 1);
+        assert_eq!((bb.0, bb.2), (1, 5), "bbox {bb:?}");
+        assert_eq!(bb.3 - bb.1 + 1, 11, "bbox {bb:?}");
+        assert_eq!(c, [3.0, 10.0]);
     }
 
     #[test]
@@ -540,10 +638,11 @@ mod tests {
             },
         ];
         let seeds = [g.idx(3, 3), g.idx(12, 4), g.idx(8, 10)];
-        for s in 0..20u64 {
+        for s in 0..40u64 {
             let mut gg = g.clone();
             let mut rng = Xoshiro256PlusPlus::seed_from_u64(s);
-            let area = grow(&mut gg, &walls, &growers, &seeds, &mut rng);
+            let rule = RULES[s as usize % 2];
+            let area = grow(&mut gg, &walls, &growers, &seeds, rule, &mut rng);
             for (k, gr) in growers.iter().enumerate() {
                 assert_eq!(gg.count(gr.label), area[k]);
                 assert!(
@@ -558,28 +657,35 @@ mod tests {
 
     #[test]
     fn growth_never_straddles_a_fixed_wall() {
-        let mut g = setup(10, 6);
+        let g = setup(10, 6);
         let mut walls = Walls::none(g.w, g.h);
         // a full-height wall on the grid line left of padded column 5
         for y in 1..7 {
             walls.block_vertical(5, y);
         }
-        let mut rng = Xoshiro256PlusPlus::seed_from_u64(3);
-        let seed = g.idx(2, 3);
-        grow(
-            &mut g,
-            &walls,
-            &[Grower {
-                label: 1,
-                target: 60.0,
-            }],
-            &[seed],
-            &mut rng,
-        );
-        for y in 1..7 {
-            assert!(g.get(5, y) != 1, "room crossed the wall at row {y}");
+        for rule in RULES {
+            let mut g = g.clone();
+            let mut rng = Xoshiro256PlusPlus::seed_from_u64(3);
+            let seed = g.idx(2, 3);
+            grow(
+                &mut g,
+                &walls,
+                &[Grower {
+                    label: 1,
+                    target: 60.0,
+                }],
+                &[seed],
+                rule,
+                &mut rng,
+            );
+            for y in 1..7 {
+                assert!(
+                    g.get(5, y) != 1,
+                    "{rule:?}: room crossed the wall at row {y}"
+                );
+            }
+            assert!(g.count(1) <= 24);
         }
-        assert!(g.count(1) <= 24);
     }
 
     #[test]
@@ -600,7 +706,14 @@ mod tests {
         let run = |s| {
             let mut gg = g.clone();
             let mut rng = Xoshiro256PlusPlus::seed_from_u64(s);
-            grow(&mut gg, &walls, &growers, &seeds, &mut rng);
+            grow(
+                &mut gg,
+                &walls,
+                &growers,
+                &seeds,
+                GrowthRule::Longest,
+                &mut rng,
+            );
             gg
         };
         assert_eq!(run(7), run(7));

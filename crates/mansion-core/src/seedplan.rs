@@ -20,6 +20,8 @@ pub struct ChildInfo {
     pub own_area: f64,
     /// Graph neighbours (ids).
     pub neighbours: Vec<String>,
+    /// Rooms that later rounds cut out of this child, with their own areas in m².
+    pub descendants: Vec<(String, f64)>,
     /// Labels outside the region this child (or a room later cut out of it) must touch.
     pub attract: Vec<Label>,
     /// Whether the graph joins this child to its parent.
@@ -366,6 +368,9 @@ pub fn request_json(req: &SeedRequest) -> String {
             serde_json::json!({
                 "id": c.id, "room_type": c.room_type, "target_area": c.target_area,
                 "own_area": c.own_area, "neighbours": c.neighbours,
+                "descendants": c.descendants.iter()
+                    .map(|(id, area)| serde_json::json!({"id": id, "area": area}))
+                    .collect::<Vec<_>>(),
             })
         })
         .collect();

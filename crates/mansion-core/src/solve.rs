@@ -6,7 +6,7 @@ use crate::cut::{self, CutOptions, RoundSpec};
 use crate::energy::{RoomFeatures, Weights};
 use crate::error::{CoreError, Result};
 use crate::grid::{Grid, GridFrame, Label, Walls, EMPTY, MAX_ROOMS, OUTSIDE};
-use crate::growth::Grower;
+use crate::growth::{Grower, GrowthRule};
 use crate::raster::{self, FootprintSpec};
 use crate::region::{pad, unpad, Region};
 use crate::seedplan::{validate_plan, ChildInfo, SeedPlanner, SeedRequest};
@@ -65,6 +65,8 @@ pub struct SolveOptions {
     pub min_width: Option<usize>,
     /// See [`CutOptions::exhaustive`].
     pub exhaustive: bool,
+    /// See [`CutOptions::growth`].
+    pub growth: GrowthRule,
 }
 
 impl Default for SolveOptions {
@@ -85,6 +87,7 @@ impl Default for SolveOptions {
             fallback_samples: c.fallback_samples,
             min_width: None,
             exhaustive: false,
+            growth: c.growth,
         }
     }
 }
@@ -127,6 +130,7 @@ pub struct AdjacencyOut {
 pub struct RoomEnergy {
     pub ratio: f64,
     pub seed: f64,
+    pub drift: f64,
     pub wall: f64,
     pub corner: f64,
     pub energy: f64,
@@ -154,6 +158,8 @@ pub struct RoundOut {
 pub struct Diagnostics {
     pub rounds: Vec<RoundOut>,
     pub fallback_used: bool,
+    /// Times a failed round sent the solver back to re-cut an earlier one.
+    pub backtracks: usize,
     pub seconds: f64,
 }
 
@@ -349,11 +355,15 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
         ));
     }
     let scale = free_area / wanted.max(1e-9);
+    // A room must be able to hold the shortest wall that realises an edge (and never less than
+    // a cell).
+    let min_cells = (opts.min_contact / opts.cell_size - 1e-9).ceil().max(1.0);
     for n in graph.nodes.iter().filter(|n| !is_core(&n.kind)) {
-        if n.area * scale / cell_area < 2.0 {
+        if n.area * scale / cell_area < min_cells {
             return invalid(format!(
-                "room '{}' ({:.2} m²) is smaller than two cells at cell_size {} m",
-                n.id, n.area, opts.cell_size
+                "room '{}' ({:.2} m²) is smaller than {min_cells} cell(s) at cell_size {} m \
+                 (a wall of min_contact {} m needs that many)",
+                n.id, n.area, opts.cell_size, opts.min_contact
             ));
         }
     }
@@ -503,6 +513,15 @@ pub fn spine_centre(region: &Region) -> usize {
 }
 
 /// Solve one floor.
+/// Re-cuts allowed per round when later rounds fail, and backtracks allowed per floor.
+const MAX_RECUTS: u64 = 3;
+const MAX_BACKTRACKS: usize = 8;
+
+/// Index of the round whose children include `label`.
+fn creator(rounds: &[(Label, Vec<Label>)], label: Label) -> Option<usize> {
+    rounds.iter().position(|(_, cs)| cs.contains(&label))
+}
+
 pub fn solve_floor(
     graph: &GraphSpec,
     fp: &FootprintSpec,
@@ -551,6 +570,7 @@ pub fn solve_floor(
         weights: opts.weights,
         rng_seed: opts.rng_seed,
         exhaustive: opts.exhaustive,
+        growth: opts.growth,
     };
     let mut grid = floor.grid.clone();
     let mut exists: Vec<bool> = (0..n)
@@ -559,7 +579,18 @@ pub fn solve_floor(
     let has_children: BTreeSet<Label> = rounds.iter().map(|r| r.0).collect();
     let mut diag = Vec::new();
     let mut fallback_used = false;
-    for (t, (parent, children)) in rounds.iter().enumerate() {
+    // Backtracking: when a round cannot be cut, the region it cuts (made by an earlier round) is
+    // usually the wrong shape for a constraint across branches (a balcony that must touch both
+    // the master room it is cut from and the kitchen next door). Re-cut the round that made the
+    // region with fresh samples, and every round after it, a bounded number of times.
+    let mut snapshots: Vec<(Grid, Vec<bool>, usize, bool)> = Vec::with_capacity(rounds.len());
+    let mut attempts = vec![0u64; rounds.len()];
+    let mut backtracks = 0usize;
+    let mut t = 0;
+    while t < rounds.len() {
+        let (parent, children) = (&rounds[t].0, &rounds[t].1);
+        snapshots.truncate(t);
+        snapshots.push((grid.clone(), exists.clone(), diag.len(), fallback_used));
         let t0 = Instant::now();
         let region = Region::of_label(&grid, *parent);
         // descendants' needs: rooms outside this region that a child or its subtree must touch
@@ -580,6 +611,19 @@ pub fn solve_floor(
             }
             out.into_iter().collect()
         };
+        let descendants_of = |c: Label| -> Vec<(String, f64)> {
+            let mut out = Vec::new();
+            let mut stack = vec![c];
+            while let Some(x) = stack.pop() {
+                if let Some((_, cs)) = rounds.iter().find(|r| r.0 == x) {
+                    for &d in cs {
+                        out.push((floor.names[d as usize].clone(), floor.areas[d as usize]));
+                        stack.push(d);
+                    }
+                }
+            }
+            out
+        };
         let infos: Vec<ChildInfo> = children
             .iter()
             .map(|&c| ChildInfo {
@@ -592,6 +636,7 @@ pub fn solve_floor(
                     .neighbours(c)
                     .map(|q| floor.names[q as usize].clone())
                     .collect(),
+                descendants: descendants_of(c),
                 attract: attract_of(c),
                 touches_parent: floor.neighbours(c).any(|q| q == *parent),
             })
@@ -688,8 +733,9 @@ pub fn solve_floor(
             },
             names: floor.names.clone(),
         };
-        let outcome = match cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, t as u64) {
-            Ok(o) => o,
+        let stream = t as u64 + (attempts[t] << 40);
+        let result = match cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, stream) {
+            Ok(o) => Ok(o),
             // When the leftover cannot serve as the parent, let the parent grow from the deepest
             // point of its region like its children (the end of the spine is that point) and try
             // the whole budget once more before giving up.
@@ -710,11 +756,39 @@ pub fn solve_floor(
                     &grown,
                     &cut_opts,
                     n,
-                    t as u64 + (1 << 32),
+                    stream + (1 << 32),
                 )
-                .map_err(|_| first)?
+                .map_err(|_| first)
             }
-            Err(e) => return Err(e),
+            Err(e) => Err(e),
+        };
+        let outcome = match result {
+            Ok(o) => o,
+            Err(e) => {
+                // the round that made this parent's region, or the nearest ancestor round with
+                // attempts left
+                let mut back = creator(&rounds, *parent);
+                while let Some(r) = back {
+                    if attempts[r] < MAX_RECUTS {
+                        break;
+                    }
+                    back = creator(&rounds, rounds[r].0);
+                }
+                match back {
+                    Some(r) if backtracks < MAX_BACKTRACKS => {
+                        backtracks += 1;
+                        attempts[r] += 1;
+                        let (g, ex, d, fb) = snapshots[r].clone();
+                        grid = g;
+                        exists = ex;
+                        diag.truncate(d);
+                        fallback_used = fb;
+                        t = r;
+                        continue;
+                    }
+                    _ => return Err(e),
+                }
+            }
         };
         fallback_used |= outcome.fallback;
         grid = outcome.grid;
@@ -739,6 +813,7 @@ pub fn solve_floor(
                             RoomEnergy {
                                 ratio: f.ratio,
                                 seed: f.seed,
+                                drift: f.drift,
                                 wall: f.wall,
                                 corner: f.corner,
                                 energy: f.energy,
@@ -749,11 +824,13 @@ pub fn solve_floor(
             },
             seconds: t0.elapsed().as_secs_f64(),
         });
+        t += 1;
     }
     let mut sol = output(&floor, &grid);
     sol.diagnostics = Diagnostics {
         rounds: diag,
         fallback_used,
+        backtracks,
         seconds: start.elapsed().as_secs_f64(),
     };
     Ok(sol)
@@ -830,6 +907,7 @@ fn output(floor: &Floor, padded: &Grid) -> Solution {
         diagnostics: Diagnostics {
             rounds: vec![],
             fallback_used: false,
+            backtracks: 0,
             seconds: 0.0,
         },
     }

@@ -28,6 +28,7 @@ __all__ = [
     "PlacedRoom",
     "SeedBox",
     "SeedChild",
+    "SeedDescendant",
     "SeedPlan",
     "SeedPlanner",
     "SeedRegion",
@@ -63,12 +64,19 @@ class SeedRequestLayout(BaseModel):
     rooms: list[PlacedRoom] = Field(default_factory=list)
 
 
+class SeedDescendant(BaseModel):
+    """A room that a later round will cut out of a child, with its own area in m²."""
+
+    id: str
+    area: float
+
+
 class SeedChild(BaseModel):
     """A child room to place in this round.
 
     ``target_area`` is the area the child's region must hold (its own area plus that of the rooms
-    that will later be cut out of it); ``own_area`` is the room's own area. ``neighbours`` are its
-    neighbours in the room graph.
+    that will later be cut out of it, listed in ``descendants``); ``own_area`` is the room's own
+    area. ``neighbours`` are its neighbours in the room graph.
     """
 
     id: str
@@ -76,6 +84,7 @@ class SeedChild(BaseModel):
     target_area: float
     own_area: float
     neighbours: list[str] = Field(default_factory=list)
+    descendants: list[SeedDescendant] = Field(default_factory=list)
 
 
 class SeedRequest(BaseModel):
@@ -175,17 +184,39 @@ class SeedPlanner(Protocol):
 
 
 class FixedSeedPlanner:
-    """A planner that always answers with the same points, given by room id.
+    """A planner that answers from fixed points, one per room id.
 
-    Useful for tests and for reproducing a layout: each child gets ``points[child_id]``; the
-    parent gets ``points[parent_id]`` as its ``parent_seed`` when present. A child without a
-    point is an error (raised as :class:`PlannerError` by the solver).
+    Each point is where a room's centroid should be. A child that later rounds will cut into
+    several rooms gets the area-weighted mean of its own point and those of its descendants that
+    have one: the centre of the whole region it must cover, which is where growth should start
+    (the child's own point would pull that region off-centre). With ``subtree_centroids=False``
+    every child gets exactly its own point. The parent gets its own point as its
+    ``parent_seed`` when present. A child without a point is an error (raised as
+    :class:`PlannerError` by the solver).
     """
 
-    def __init__(self, points: Mapping[str, tuple[float, float]]) -> None:
+    def __init__(
+        self, points: Mapping[str, tuple[float, float]], *, subtree_centroids: bool = True
+    ) -> None:
         self.points: dict[str, tuple[float, float]] = {
             k: (float(p[0]), float(p[1])) for k, p in points.items()
         }
+        self.subtree_centroids = subtree_centroids
+
+    def _seed(self, child: SeedChild) -> tuple[float, float]:
+        x, y = self.points[child.id]
+        if not self.subtree_centroids or not child.descendants:
+            return (x, y)
+        weighted = [(self.points[child.id], child.own_area)] + [
+            (self.points[d.id], d.area) for d in child.descendants if d.id in self.points
+        ]
+        total = sum(a for _, a in weighted)
+        if total <= 0:
+            return (x, y)
+        return (
+            sum(p[0] * a for p, a in weighted) / total,
+            sum(p[1] * a for p, a in weighted) / total,
+        )
 
     def plan(self, request: SeedRequest) -> SeedPlan:
         missing = [c.id for c in request.children if c.id not in self.points]
@@ -196,12 +227,12 @@ class FixedSeedPlanner:
                 f"parent {request.parent!r})"
             )
         return SeedPlan(
-            seeds={c.id: ChildSeed(point=self.points[c.id]) for c in request.children},
+            seeds={c.id: ChildSeed(point=self._seed(c)) for c in request.children},
             parent_seed=self.points.get(request.parent),
         )
 
     def __repr__(self) -> str:
-        return f"FixedSeedPlanner({self.points!r})"
+        return f"FixedSeedPlanner({self.points!r}, subtree_centroids={self.subtree_centroids})"
 
 
 PlanFunction = Callable[[SeedRequest], "SeedPlan | Mapping[str, Any]"]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
@@ -18,8 +18,12 @@ __all__ = ["EnergyWeights", "SolverSettings"]
 class EnergyWeights(BaseModel):
     """Weights of the per-room energy that ranks candidate cuts.
 
-    For a child room r: ``e = ratio·|area−a|/a + seed·z_seed + corner·max(0, n_int−4)
-    − wall·clamp01(wall_contact)``, and a candidate's score is −Σ e.
+    For a child room r: ``e = ratio·|area−a|/a + seed·z_seed + drift·d/√a
+    + corner·max(0, n_int−4) − wall·clamp01(wall_contact)``, and the candidate with the lowest
+    Σ e wins. ``d`` is the distance from the room's centroid to its seed; ``z_seed`` is ``d``
+    min–max normalised over the candidate's rooms (the paper's term); ``d/√a`` is ``d`` in units
+    of the room's own size (ours: the min–max form spans 0..1 in every candidate, so it hardly
+    separates candidates).
 
     The defaults are the values released by the authors of MANSION (CVPR 2026) with their code,
     which works on a 1 m grid. Other weights can be kept in a JSON file such as
@@ -31,6 +35,9 @@ class EnergyWeights(BaseModel):
 
     ratio: float = Field(default=6.0, ge=0.0, description="Relative area error.")
     seed: float = Field(default=0.2, ge=0.0, description="Centroid-to-seed distance (normalised).")
+    drift: float = Field(
+        default=0.0, ge=0.0, description="Centroid-to-seed distance over √(target area)."
+    )
     wall: float = Field(default=0.8, ge=0.0, description="Contact with the parent's envelope.")
     corner: float = Field(default=3.0, ge=0.0, description="Interior corners beyond four.")
 
@@ -60,7 +67,10 @@ class SolverSettings(BaseModel):
       core reuses the last one for retries beyond the list);
     - ``seed_separation``: minimum distance between perturbed seeds, in cells;
     - ``fallback_samples``: candidates drawn by the Monte Carlo fallback when every retry failed;
-    - ``min_width``: narrowest allowed room, in cells (None: no limit).
+    - ``min_width``: narrowest allowed room, in cells (None: no limit);
+    - ``growth``: side choice of the rectangular growth phase: ``"balanced"`` keeps each room
+      centred on its seed until a wall or a neighbour stops it (so seeds act as centroids);
+      ``"longest"`` grows the longest free side first, as in Lopes et al. (2010).
     """
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
@@ -72,6 +82,7 @@ class SolverSettings(BaseModel):
     seed_separation: float = Field(default=2.0, ge=0.0)
     fallback_samples: int = Field(default=400, ge=0)
     min_width: int | None = Field(default=None, ge=1)
+    growth: Literal["balanced", "longest"] = "balanced"
 
     @model_validator(mode="after")
     def _check_gammas(self) -> SolverSettings:

@@ -124,12 +124,14 @@ class Adjacency(BaseModel):
 
 
 class RoomEnergy(BaseModel):
-    """The energy terms (area ratio, seed distance, wall contact, interior corners) of one child
-    room of a round's winning candidate, and ``energy``, that room's total as the solver scored it
-    (see the paper's energy; lower is better)."""
+    """The energy terms of one child room of a round's winning candidate (area ratio, seed
+    distance min–max normalised and over √area, wall contact, interior corners; see
+    :class:`mansion.EnergyWeights`), and ``energy``, that room's total as the solver scored it
+    (lower is better)."""
 
     ratio: float
     seed: float
+    drift: float
     wall: float
     corner: float
     energy: float
@@ -160,8 +162,15 @@ class RoundDiagnostics(BaseModel):
 
 
 class Diagnostics(BaseModel):
-    rounds: list[RoundDiagnostics]
+    rounds: list[RoundDiagnostics] = Field(
+        description="The rounds of the final layout (re-cut rounds replace their earlier tries)."
+    )
     fallback_used: bool
+    backtracks: int = Field(
+        default=0,
+        description="Times a round that could not be cut sent the solver back to re-cut the "
+        "round that made its region (at most 3 re-cuts per round, 8 per floor).",
+    )
     seconds: float
 
 
