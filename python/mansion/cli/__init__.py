@@ -1,5 +1,9 @@
 """The ``mansion`` command line (typer); ``app`` is the console-script entry point."""
 
+from mansion.cli.evaluate import eval_app, tune_weights
 from mansion.cli.main import app
+
+app.add_typer(eval_app, name="eval")
+app.command("tune-weights")(tune_weights)
 
 __all__ = ["app"]

@@ -1,0 +1,226 @@
+"""``evaluate_floorplans``: run the solver on T2D plans under the MA protocol and score it.
+
+Each plan is solved from what :func:`mansion.eval.t2d.protocol_inputs` exposes (free mask,
+room types, seeds, target areas, adjacency), rasterised back to the 64×64 frame and compared
+with ``label64`` class by class (:func:`mansion.eval.iou.plan_iou`). A plan the solver cannot
+lay out is a failure and scores 0, as in the paper.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Callable, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+from typing import Any, Literal
+
+from pydantic import BaseModel, Field
+
+from mansion._io import atomic_write_text
+from mansion.exceptions import InvalidInputError, MansionError
+from mansion.floorplan import EnergyWeights, FixedSeedPlanner, SeedPlanner, SolverSettings, solve_floor
+from mansion.eval.iou import plan_iou
+from mansion.eval.t2d import CELL_SIZE, T2DPlan, iter_plans, plan_ids, protocol_inputs, solver_to_mask
+
+__all__ = ["EvalReport", "PlanResult", "evaluate_floorplans", "solve_plan"]
+
+Mode = Literal["hierarchical", "flat"]
+
+
+class PlanResult(BaseModel):
+    """The score of one plan (percentages) and how the solver got there."""
+
+    id: str
+    micro: float
+    macro: float
+    failed: bool
+    error: str | None = None
+    fallback: bool = False
+    backtracks: int = 0
+    rooms: int
+    seconds: float
+
+
+class EvalReport(BaseModel):
+    """Scores over a set of plans, as ``--json`` writes them (IoUs in percent)."""
+
+    micro: float
+    macro: float
+    plans: int
+    failures: int
+    fallbacks: int = Field(description="Plans where the Monte Carlo fallback won a round.")
+    seconds: float
+    mode: Mode
+    rng_seed: int = 0
+    weights: EnergyWeights
+    settings: SolverSettings
+    per_plan: list[PlanResult]
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        return atomic_write_text(path, self.model_dump_json(indent=2) + "\n")
+
+    def subset(self, keep: Callable[[str], bool]) -> tuple[float, float, int]:
+        """Micro, macro and plan count over the plans whose id passes ``keep``."""
+        chosen = [p for p in self.per_plan if keep(p.id)]
+        if not chosen:
+            return (0.0, 0.0, 0)
+        n = len(chosen)
+        return (sum(p.micro for p in chosen) / n, sum(p.macro for p in chosen) / n, n)
+
+
+def solve_plan(
+    plan: T2DPlan,
+    *,
+    mode: Mode = "hierarchical",
+    weights: EnergyWeights | None = None,
+    settings: SolverSettings | None = None,
+    rng_seed: int = 0,
+    planner: SeedPlanner | None = None,
+) -> Any:
+    """Solve one plan under the protocol; returns the predicted 64×64 class map (row 0 = top)
+    and the layout. Raises :class:`MansionError` when the solver fails."""
+    inputs = protocol_inputs(plan)
+    layout = solve_floor(
+        inputs.graph,
+        inputs.footprint,
+        seed_planner=planner if planner is not None else FixedSeedPlanner(inputs.seeds),
+        weights=weights,
+        settings=settings,
+        cell_size=CELL_SIZE,
+        # one cell: the data's walls between neighbours are often only a few cells long
+        min_contact=CELL_SIZE,
+        hierarchical=mode == "hierarchical",
+        rng_seed=rng_seed,
+    )
+    return solver_to_mask(layout.grid, inputs.classes), layout
+
+
+def _score_one(
+    job: tuple[str, str, Mode, EnergyWeights, SolverSettings, int],
+) -> tuple[PlanResult, Any]:
+    pid, path, mode, weights, settings, rng_seed = job
+    t0 = time.perf_counter()
+    plan = T2DPlan.load(path)
+    try:
+        pred, layout = solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed)
+    except MansionError as exc:
+        return (
+            PlanResult(
+                id=pid, micro=0.0, macro=0.0, failed=True, error=str(exc), rooms=len(plan.rooms),
+                seconds=time.perf_counter() - t0,
+            ),
+            None,
+        )
+    score = plan_iou(pred, plan.label_array())
+    result = PlanResult(
+        id=pid,
+        micro=100.0 * score.micro,
+        macro=100.0 * score.macro,
+        failed=False,
+        fallback=layout.diagnostics.fallback_used,
+        backtracks=layout.diagnostics.backtracks,
+        rooms=len(plan.rooms),
+        seconds=time.perf_counter() - t0,
+    )
+    return result, pred
+
+
+def evaluate_floorplans(
+    data: str | os.PathLike[str],
+    *,
+    mode: Mode = "hierarchical",
+    limit: int | None = None,
+    ids: Sequence[str] | None = None,
+    weights: EnergyWeights | None = None,
+    settings: SolverSettings | None = None,
+    rng_seed: int = 0,
+    workers: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> EvalReport:
+    """Solve and score the plans of ``data`` (``DIR/plans/<id>.json``).
+
+    ``ids`` picks plans (default: all, in id order), ``limit`` keeps the first N of them.
+    ``workers`` processes solve plans side by side (default: the machine's cores); the result does
+    not depend on it. ``progress(done, total)`` is called after each plan.
+    """
+    if mode not in ("hierarchical", "flat"):
+        raise InvalidInputError(f"mode must be 'hierarchical' or 'flat', got {mode!r}")
+    if limit is not None and limit < 1:
+        raise InvalidInputError(f"limit must be >= 1, got {limit}")
+    w = weights if weights is not None else EnergyWeights()
+    s = settings if settings is not None else SolverSettings()
+    chosen = list(ids) if ids is not None else plan_ids(data)
+    if limit is not None:
+        chosen = chosen[:limit]
+    if not chosen:
+        raise InvalidInputError(f"no plans to evaluate in {str(data)!r}")
+    folder = Path(data) / "plans" if (Path(data) / "plans").is_dir() else Path(data)
+    jobs = [(pid, str(folder / f"{pid}.json"), mode, w, s, rng_seed) for pid in chosen]
+    n_workers = max(1, os.cpu_count() or 1) if workers is None else max(1, workers)
+
+    t0 = time.perf_counter()
+    results: list[PlanResult] = []
+    if n_workers == 1 or len(jobs) == 1:
+        for job in jobs:
+            results.append(_score_one(job)[0])
+            if progress:
+                progress(len(results), len(jobs))
+    else:
+        # Plans are independent; chunks keep the per-task overhead small.
+        with ProcessPoolExecutor(max_workers=n_workers) as pool:
+            for result, _ in pool.map(_score_one, jobs, chunksize=4):
+                results.append(result)
+                if progress:
+                    progress(len(results), len(jobs))
+    seconds = time.perf_counter() - t0
+    n = len(results)
+    return EvalReport(
+        micro=sum(r.micro for r in results) / n,
+        macro=sum(r.macro for r in results) / n,
+        plans=n,
+        failures=sum(r.failed for r in results),
+        fallbacks=sum(r.fallback for r in results),
+        seconds=seconds,
+        mode=mode,
+        rng_seed=rng_seed,
+        weights=w,
+        settings=s,
+        per_plan=results,
+    )
+
+
+def write_gallery(
+    data: str | os.PathLike[str],
+    report: EvalReport,
+    out: str | os.PathLike[str],
+    *,
+    count: int = 5,
+) -> list[Path]:
+    """PNG comparisons of the ``count`` best and worst plans of a report (re-solved: the solver
+    is deterministic, so they are the very layouts that were scored)."""
+    from mansion.eval.gallery import plot_comparison
+
+    ranked = sorted(report.per_plan, key=lambda r: (r.micro, r.id))
+    worst = ranked[:count]
+    best = [r for r in reversed(ranked[-count:]) if r not in worst]
+    written: list[Path] = []
+    for tag, group in (("best", best), ("worst", worst)):
+        for rank, r in enumerate(group, 1):
+            _, plan = next(iter_plans(data, [r.id]))
+            if r.failed:
+                import numpy as np
+
+                pred = np.zeros((64, 64), dtype=np.int32)
+            else:
+                pred, _ = solve_plan(
+                    plan, mode=report.mode, weights=report.weights, settings=report.settings,
+                    rng_seed=report.rng_seed,
+                )
+            title = f"{tag} {rank}: plan {r.id} — micro {r.micro:.1f}, macro {r.macro:.1f}"
+            if r.failed:
+                title += " (failed)"
+            written.append(
+                plot_comparison(plan.label_array(), pred, plan.classes, Path(out) / f"{tag}_{rank}_{r.id}.png", title=title)
+            )
+    return written
