@@ -13,6 +13,7 @@ A failure raises :class:`InvalidBuildingError` naming the floor and the room, ed
 from __future__ import annotations
 
 from collections import deque
+from typing import TypeVar
 
 from mansion.exceptions import InvalidBuildingError
 from mansion.models.building import Building
@@ -21,7 +22,10 @@ from mansion.models.graph import RoomGraph
 __all__ = ["check_building", "check_graph"]
 
 
-def _reach(start: str, links: dict[str, set[str]]) -> set[str]:
+K = TypeVar("K")
+
+
+def _reach(start: K, links: dict[K, set[K]]) -> set[K]:
     seen = {start}
     queue = deque([start])
     while queue:
@@ -99,10 +103,11 @@ def check_building(building: Building, *, min_contact: float = 1.0) -> None:
             a, b = (lo, core.id), (hi, core.id)
             links.setdefault(a, set()).add(b)
             links.setdefault(b, set()).add(a)
-    everything = set(links)
+    everything: set[tuple[int, str]] = set(links)
     for floor in building.floors:
-        hub = (floor.index, floor.graph.hub.id)
-        lost = everything - _reach(hub, links)
+        hub: tuple[int, str] = (floor.index, floor.graph.hub.id)
+        reached: set[tuple[int, str]] = _reach(hub, links)
+        lost = everything - reached
         if lost:
             names = ", ".join(f"{r!r} on floor {f}" for f, r in sorted(lost)[:5])
             raise InvalidBuildingError(

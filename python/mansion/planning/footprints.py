@@ -25,7 +25,8 @@ Outline = tuple[Ring, list[Ring]]
 
 
 def _ring(poly: Polygon) -> Ring:
-    coords = list(orient(poly, sign=1.0).exterior.coords)[:-1]
+    # simplify(0) drops collinear vertices that unions and differences leave behind.
+    coords = list(orient(poly.simplify(0), sign=1.0).exterior.coords)[:-1]
     return [(float(round(x)), float(round(y))) for x, y in coords]
 
 
@@ -65,7 +66,7 @@ def shape_outline(shape: str, area: float, rng: random.Random, *, min_arm: float
         cw, ch = round(w * fx), round(h * fy)
         if shape == "l_shape":
             poly = box(0, 0, w, h).difference(box(w - cw, h - ch, w, h))
-            arms = (w - cw, h - ch)
+            arms: tuple[int, ...] = (w - cw, h - ch)
         elif shape == "u_shape":
             x0 = (w - cw) // 2
             poly = box(0, 0, w, h).difference(box(x0, h - ch, x0 + cw, h))
@@ -125,7 +126,7 @@ def stack_outlines(
         tw, th = min(tw, x1 - x0), min(th, y1 - y0)
         ox = rng.choice([x0, x1 - tw])
         oy = rng.choice([y0, y1 - th])
-        tower = (_ring(box(ox, oy, ox + tw, oy + th)), [])
+        tower: Outline = (_ring(box(ox, oy, ox + tw, oy + th)), [])
         podium_floors = 1 if floors < 5 else 2
         return [base] * podium_floors + [tower] * (floors - podium_floors)
     if stack == "garage":
@@ -133,17 +134,26 @@ def stack_outlines(
         poly = Polygon(main[0])
         x0, y0, x1, y1 = poly.bounds
         gw, gd = 6, 6
-        # The garage sticks out of the left or right wall, flush with the front or the back.
-        left = rng.random() < 0.5
-        gy = y0 if rng.random() < 0.5 else y1 - gw
-        garage = box(x0 - gd, gy, x0, gy + gw) if left else box(x1, gy, x1 + gd, gy + gw)
-        ground = poly.union(garage)
+        # The garage sticks out of the left or right wall, flush with the front or the back,
+        # wherever that wall is long enough to carry it.
+        options = [
+            box(x0 - gd, y0, x0, y0 + gw), box(x0 - gd, y1 - gw, x0, y1),
+            box(x1, y0, x1 + gd, y0 + gw), box(x1, y1 - gw, x1 + gd, y1),
+        ]
+        rng.shuffle(options)
+        ground = poly
+        for garage in options:
+            joined = poly.union(garage)
+            if joined.geom_type == "Polygon" and poly.intersection(garage).length >= gw:
+                ground = joined
+                break
         gx0, gy0 = ground.bounds[0], ground.bounds[1]
         from shapely import affinity
 
         ground = affinity.translate(ground, -gx0, -gy0)
         poly = affinity.translate(poly, -gx0, -gy0)
-        return [(_ring(ground), [])] + [(_ring(poly), [])] * (floors - 1)
+        no_holes: list[Ring] = []
+        return [(_ring(ground), no_holes)] + [(_ring(poly), no_holes)] * (floors - 1)
     base = shape_outline(shape, area, rng, min_arm=min_arm)
     outlines = [base] * floors
     if stack == "setback" and floors >= 2:

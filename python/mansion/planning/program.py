@@ -269,10 +269,11 @@ def _split_wings(
     children corridor wings for its most repeated room type, so every cut round stays small."""
     zones = dict(zones)
     out: list[tuple[str, float, str | None]] = []
-    by_zone: dict[str | None, list[tuple[str, float, str | None]]] = {}
+    by_zone: dict[str, list[tuple[str, float, str | None]]] = {}
+    direct = [r for r in rooms if r[2] is None]
     for room in rooms:
-        by_zone.setdefault(room[2], []).append(room)
-    direct = by_zone.pop(None, [])
+        if room[2] is not None:
+            by_zone.setdefault(room[2], []).append(room)
     n_children = len(direct) + len(by_zone)
     if n_children > MAX_HUB_CHILDREN:
         counts = Counter(t for t, _, _ in direct)

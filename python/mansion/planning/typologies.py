@@ -286,7 +286,7 @@ SUPERMARKET = Typology(
     upper=FloorTemplate(
         "corridor",
         (Rm("warehouse"), Rm("management_office"), Rm("staff_room"), Rm("changing_room", 2),
-         Rm("storage", 2, fill=True), *_TOILETS),
+         Rm("warehouse", 1, fill=True, area=40), Rm("storage", optional=True), *_TOILETS),
         (_TOILET_ZONE,),
     ),
     shapes=("rectangle", "l_shape"),
@@ -323,7 +323,7 @@ LIBRARY = Typology(
 )
 
 RESTAURANT = Typology(
-    "restaurant", "public", (1, 2), (120, 260),
+    "restaurant", "public", (1, 2), (200, 300),
     FloorTemplate(
         "dining_hall",
         (Rm("host_stand"), Rm("bar", optional=True), Rm("commercial_kitchen", zone="kitchen"),
