@@ -1,10 +1,18 @@
-"""mansion: the single-floor floorplan solver of the MANSION paper, a Rust core under a Python API.
+"""mansion: the MANSION paper's building generator, a Rust floorplan core under a Python API.
 
 The heart of the API is :func:`solve_floor`, which partitions a footprint into the rooms of a room
-graph, and :func:`plot_layout`, which draws the result.
+graph, :func:`generate_building`, which plans and solves a whole multi-floor building from a
+description, and :func:`plot_layout`, which draws a floor.
 """
 
-from mansion.exceptions import InfeasibleLayoutError, InvalidInputError, MansionError, PlannerError
+from mansion.building import generate_building
+from mansion.exceptions import (
+    InfeasibleLayoutError,
+    InvalidBuildingError,
+    InvalidInputError,
+    MansionError,
+    PlannerError,
+)
 from mansion.floorplan import (
     ChildSeed,
     EnergyWeights,
@@ -18,6 +26,7 @@ from mansion.floorplan import (
 )
 from mansion.models import (
     Adjacency,
+    Building,
     Core,
     Diagnostics,
     FloorLayout,
@@ -46,6 +55,7 @@ __version__ = _version()
 
 __all__ = [
     "Adjacency",
+    "Building",
     "ChildSeed",
     "Core",
     "Diagnostics",
@@ -54,6 +64,7 @@ __all__ = [
     "FloorLayout",
     "Footprint",
     "InfeasibleLayoutError",
+    "InvalidBuildingError",
     "InvalidInputError",
     "LabelGrid",
     "LayoutRoom",
@@ -69,6 +80,7 @@ __all__ = [
     "SeedRequest",
     "SolverSettings",
     "__version__",
+    "generate_building",
     "plot_layout",
     "solve_floor",
 ]

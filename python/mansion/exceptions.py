@@ -7,7 +7,13 @@ Keep the names stable: they are part of the binding contract.
 
 from __future__ import annotations
 
-__all__ = ["InfeasibleLayoutError", "InvalidInputError", "MansionError", "PlannerError"]
+__all__ = [
+    "InfeasibleLayoutError",
+    "InvalidBuildingError",
+    "InvalidInputError",
+    "MansionError",
+    "PlannerError",
+]
 
 
 class MansionError(Exception):
@@ -27,3 +33,11 @@ class InfeasibleLayoutError(MansionError):
 
 class PlannerError(MansionError):
     """A seed planner failed or returned a seed plan the solver cannot use."""
+
+
+class InvalidBuildingError(MansionError):
+    """A generated building failed a check before it was written (a floor's graph not connected,
+    a core not where the other floors have it, a room that cannot be reached).
+
+    The message names the floor and the room, edge or core at fault.
+    """

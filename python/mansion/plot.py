@@ -17,10 +17,11 @@ from mansion.models import FloorLayout, LayoutRoom
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
     from shapely.geometry import Point as ShapelyPoint
     from shapely.geometry import Polygon
 
-__all__ = ["plot_layout", "room_label"]
+__all__ = ["draw_layout", "layout_bounds", "plot_layout", "room_label", "save_figure"]
 
 _FORMATS = {".png": "png", ".svg": "svg"}
 
@@ -108,38 +109,26 @@ def _draw_room(ax: Axes, room: LayoutRoom, colour: object, points_per_metre: flo
     )
 
 
-def plot_layout(
-    layout: FloorLayout, path: str | os.PathLike[str], *, title: str | None = None
-) -> Path:
-    """Draw ``layout`` to ``path`` (PNG or SVG, chosen by the suffix), atomically.
-
-    Each room is filled with its own colour and outlined, labelled with its id (and room type when
-    different) and its area in m² at a point inside the room; cores (stairs, elevators) are
-    hatched. Axes are in metres with equal aspect. Returns the path written.
-    """
-    from matplotlib import colormaps
-    from matplotlib.figure import Figure
-
-    target = Path(path)
-    fmt = _FORMATS.get(target.suffix.lower())
-    if fmt is None:
-        raise InvalidInputError(
-            f"cannot plot to {str(target)!r}: the file name must end in .png or .svg"
-        )
-    if not layout.rooms:
-        raise InvalidInputError("cannot plot a layout without rooms")
-
+def layout_bounds(layout: FloorLayout) -> tuple[float, float, float, float]:
+    """(x0, y0, x1, y1) of every room of the layout, in metres."""
     xs = [x for room in layout.rooms for x, _ in room.polygon]
     ys = [y for room in layout.rooms for _, y in room.polygon]
-    x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
-    width, height = max(x1 - x0, 1e-6), max(y1 - y0, 1e-6)
-    fig_w = 10.0
-    fig_h = max(3.0, min(14.0, fig_w * height / width + 0.8))
-    # Points per metre on paper (equal aspect: the tighter axis sets the scale), to size labels.
-    points_per_metre = 72.0 * 0.85 * min(fig_w / width, fig_h / height)
+    return min(xs), min(ys), max(xs), max(ys)
 
-    fig = Figure(figsize=(fig_w, fig_h))
-    ax = fig.add_subplot()
+
+def draw_layout(
+    ax: Axes,
+    layout: FloorLayout,
+    points_per_metre: float,
+    *,
+    title: str | None = None,
+    bounds: tuple[float, float, float, float] | None = None,
+) -> None:
+    """Draw every room of ``layout`` on ``ax`` (labels sized for ``points_per_metre``); axes in
+    metres with equal aspect, limited to ``bounds`` (default: the layout's own)."""
+    from matplotlib import colormaps
+
+    x0, y0, x1, y1 = bounds or layout_bounds(layout)
     palette = colormaps["tab20"]
     n_colour = 0
     for room in layout.rooms:
@@ -149,8 +138,7 @@ def plot_layout(
             colour = palette(n_colour % palette.N)
             n_colour += 1
         _draw_room(ax, room, colour, points_per_metre)
-
-    pad = 0.02 * max(width, height)
+    pad = 0.02 * max(x1 - x0, y1 - y0)
     ax.set_xlim(x0 - pad, x1 + pad)
     ax.set_ylim(y0 - pad, y1 + pad)
     ax.set_aspect("equal")
@@ -158,8 +146,51 @@ def plot_layout(
     ax.set_ylabel("y (m)")
     if title:
         ax.set_title(title)
-    fig.tight_layout()
 
+
+def plot_layout(
+    layout: FloorLayout, path: str | os.PathLike[str], *, title: str | None = None
+) -> Path:
+    """Draw ``layout`` to ``path`` (PNG or SVG, chosen by the suffix), atomically.
+
+    Each room is filled with its own colour and outlined, labelled with its id (and room type when
+    different) and its area in m² at a point inside the room; cores (stairs, elevators) are
+    hatched. Axes are in metres with equal aspect. Returns the path written.
+    """
+    from matplotlib.figure import Figure
+
+    target = Path(path)
+    _format_of(target)
+    if not layout.rooms:
+        raise InvalidInputError("cannot plot a layout without rooms")
+
+    x0, y0, x1, y1 = layout_bounds(layout)
+    width, height = max(x1 - x0, 1e-6), max(y1 - y0, 1e-6)
+    fig_w = 10.0
+    fig_h = max(3.0, min(14.0, fig_w * height / width + 0.8))
+    # Points per metre on paper (equal aspect: the tighter axis sets the scale), to size labels.
+    points_per_metre = 72.0 * 0.85 * min(fig_w / width, fig_h / height)
+
+    fig = Figure(figsize=(fig_w, fig_h))
+    ax = fig.add_subplot()
+    draw_layout(ax, layout, points_per_metre, title=title)
+    fig.tight_layout()
+    return save_figure(fig, target)
+
+
+def _format_of(target: Path) -> str:
+    fmt = _FORMATS.get(target.suffix.lower())
+    if fmt is None:
+        raise InvalidInputError(
+            f"cannot plot to {str(target)!r}: the file name must end in .png or .svg"
+        )
+    return fmt
+
+
+def save_figure(fig: Figure, path: str | os.PathLike[str]) -> Path:
+    """Write a matplotlib figure to ``path`` (PNG or SVG by suffix), atomically."""
+    target = Path(path)
+    fmt = _format_of(target)
     buf = io.BytesIO()
     if fmt == "svg":
         # No timestamp, so the same layout gives the same file.

@@ -1,4 +1,4 @@
-"""``mansion solve`` and ``mansion version``."""
+"""``mansion generate``, ``mansion solve`` and ``mansion version``."""
 
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ from mansion.exceptions import MansionError
 
 app = typer.Typer(
     name="mansion",
-    help="Lay out building floors from a room graph and a footprint (MANSION).",
+    help="Generate multi-floor buildings from a description, or lay out one floor (MANSION).",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -105,6 +105,74 @@ def solve(
     fallback = " (Monte Carlo fallback used)" if layout.diagnostics.fallback_used else ""
     console.print(f"Solved in {seconds:.2f} s{fallback}.")
     console.print(f"Wrote {escape(str(json_path))} and {escape(str(png_path))}")
+
+
+class PlannerName(str, Enum):
+    offline = "offline"
+    anthropic = "anthropic"
+
+
+@app.command()
+def generate(
+    description: Annotated[str, typer.Argument(help='What to build, e.g. "a four-storey hospital with two elevators".')],
+    out: Annotated[Path, typer.Option("--out", "-o", help="Folder for building.json and the pictures.")],
+    floors: Annotated[Optional[int], typer.Option(help="Number of floors (1-10); default: from the description.")] = None,
+    area: Annotated[Optional[float], typer.Option(help="Gross area per floor in m2 (at most 500).")] = None,
+    footprint: Annotated[Optional[Path], typer.Option(help="Footprint JSON whose outline every floor uses.")] = None,
+    planner: Annotated[PlannerName, typer.Option(help="Who plans the building.")] = PlannerName.offline,
+    seed: Annotated[int, typer.Option(help="Random seed; the same seed and inputs give the same building.")] = 0,
+) -> None:
+    """Generate a multi-floor building: DIR/building.json, DIR/floor_<k>.png, DIR/overview.png."""
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from mansion.building import generate_building, plot_building, plot_floors
+
+    console = Console()
+    start = time.perf_counter()
+    try:
+        with Progress(
+            TextColumn("{task.description}"), BarColumn(), TextColumn("{task.completed}/{task.total}"),
+            TimeElapsedColumn(), console=console, transient=True,
+        ) as bar:
+            task = bar.add_task("planning the building…", total=None)
+
+            def progress(message: str, done: int, total: int) -> None:
+                bar.update(task, description=f"solving {message}…", completed=done, total=total)
+
+            building = generate_building(
+                description, floors=floors, area=area, footprint=footprint,
+                planner=planner.value, seed=seed, progress=progress,
+            )
+            bar.update(task, description="drawing…")
+            json_path = building.to_json(out / "building.json")
+            pictures = plot_floors(building, out)
+            overview = plot_building(building, out / "overview.png")
+    except MansionError as exc:
+        raise _fail(str(exc)) from None
+    except OSError as exc:
+        raise _fail(f"cannot write to {str(out)!r}: {exc.strerror or exc}") from None
+    seconds = time.perf_counter() - start
+
+    program = building.program
+    table = Table(title=f"{program.building_type.replace('_', ' ')}: {program.floor_count} floors, {program.method or 'no cores'}")
+    table.add_column("floor", justify="right")
+    table.add_column("rooms", justify="right")
+    table.add_column("area m²", justify="right")
+    table.add_column("hub")
+    table.add_column("notes")
+    for floor in building.floors:
+        notes = [f"copy of floor {floor.copy_of}"] if floor.copy_of is not None else []
+        if floor.footprint.fixed_walls:
+            notes.append(f"{len(floor.footprint.fixed_walls)} load-bearing walls kept")
+        notes += floor.relaxations
+        table.add_row(
+            str(floor.index), str(len(floor.layout.rooms)),
+            f"{sum(r.area for r in floor.layout.rooms):.0f}", escape(floor.graph.hub.id),
+            escape("; ".join(notes)),
+        )
+    console.print(table)
+    console.print(f"Generated in {seconds:.2f} s (palette: {escape(building.palette.name)}).")
+    console.print(f"Wrote {escape(str(json_path))}, {len(pictures)} floor pictures and {escape(str(overview))}")
 
 
 @app.command()

@@ -1,8 +1,21 @@
-"""Pydantic data models shared by every stage: the room graph, the footprint and the solved layout.
+"""Pydantic data models shared by every stage: the room graph, the footprint, the solved layout and
+the whole building.
 
 Every model round-trips through JSON exactly: ``M.model_validate_json(m.model_dump_json()) == m``.
 """
 
+from mansion.models.building import (
+    BUILDING_SCHEMA_VERSION,
+    Building,
+    BuildingCore,
+    BuildingProgram,
+    Floor,
+    FloorCopy,
+    FloorProgram,
+    Palette,
+    ProgramRoom,
+    RoomCard,
+)
 from mansion.models.footprint import Core, Footprint, Point, Ring
 from mansion.models.graph import CORE_TYPES, EdgeKind, NodeType, OpenRelation, RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import (
@@ -17,7 +30,17 @@ from mansion.models.layout import (
 )
 
 __all__ = [
+    "BUILDING_SCHEMA_VERSION",
     "CORE_TYPES",
+    "Building",
+    "BuildingCore",
+    "BuildingProgram",
+    "Floor",
+    "FloorCopy",
+    "FloorProgram",
+    "Palette",
+    "ProgramRoom",
+    "RoomCard",
     "Adjacency",
     "Core",
     "Diagnostics",

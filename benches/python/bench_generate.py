@@ -1,0 +1,91 @@
+"""End-to-end offline generation benchmark (issue 4).
+
+1. The hundred: seeds 0–99, the seed choosing the building type (all types in turn) and the
+   number of floors (1–10, within what the type allows); reports median and total time and every
+   failure.
+2. A five-floor office, plans only, timed over a few seeds (goal: < 2 s each).
+
+Run after ``pip install .`` (or ``maturin develop --release``):
+
+    python benches/python/bench_generate.py            # both parts
+    python benches/python/bench_generate.py --quick    # seeds 0–19 only
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+
+from mansion.building import generate_building
+from mansion.exceptions import MansionError
+from mansion.planning.program import typology
+
+#: Every building type the offline planner knows, in the order seeds cycle through them.
+TYPES = (
+    "studio", "family_apartment", "townhouse", "villa", "apartment_block", "office", "hospital",
+    "school", "kindergarten", "supermarket", "library", "restaurant", "hotel", "shopping_mall",
+)
+
+
+def case(seed: int) -> tuple[str, int]:
+    """(building type, floors) of benchmark seed ``seed``: types in turn, floors spread 1–10 but
+    kept to what the type can be (a studio has one floor, a townhouse at most three)."""
+    kind = TYPES[seed % len(TYPES)]
+    lo, hi = typology(kind).floors
+    wanted = 1 + (seed * 7) % 10
+    return kind, min(max(wanted, lo), max(hi, min(wanted, 10 if hi >= 4 else hi)))
+
+
+def description(kind: str, floors: int) -> str:
+    return f"a {floors}-storey {kind.replace('_', ' ')}"
+
+
+def run_hundred(seeds: range) -> int:
+    times, failures = [], []
+    for seed in seeds:
+        kind, floors = case(seed)
+        start = time.perf_counter()
+        try:
+            b = generate_building(description(kind, floors), building_type=kind, floors=floors, seed=seed)
+            rooms = sum(len(f.layout.rooms) for f in b.floors)
+            status = f"ok  {rooms:4d} rooms"
+        except MansionError as exc:
+            failures.append((seed, kind, floors, str(exc)))
+            status = f"FAIL {type(exc).__name__}"
+        dt = time.perf_counter() - start
+        times.append(dt)
+        print(f"seed {seed:3d} {kind:17s} {floors:2d} floors  {dt:6.2f} s  {status}", flush=True)
+    print(
+        f"\n{len(times)} buildings: median {statistics.median(times):.2f} s, "
+        f"total {sum(times):.1f} s, max {max(times):.2f} s, failures {len(failures)}"
+    )
+    for seed, kind, floors, msg in failures:
+        print(f"  seed {seed} {kind} {floors} floors: {msg}")
+    return len(failures)
+
+
+def run_office() -> None:
+    times = []
+    for seed in range(5):
+        start = time.perf_counter()
+        generate_building("a five-storey office", floors=5, seed=seed)
+        times.append(time.perf_counter() - start)
+    print(
+        f"five-floor office (plans only), seeds 0–4: median {statistics.median(times):.2f} s, "
+        f"max {max(times):.2f} s (goal < 2 s)"
+    )
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="seeds 0-19 only")
+    args = parser.parse_args()
+    failures = run_hundred(range(20) if args.quick else range(100))
+    run_office()
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,203 @@
+"""Load-bearing walls: the walls of a floor's first cut round, carried up as fixed walls.
+
+The solver does not report walls, so they are read off the winning label grid: every cell belongs
+to the hub or to the subtree of one of the hub's children (the rooms that the first round cut out
+and later rounds subdivided); the grid edges between two different such groups are the first
+round's walls. Edges touching a core or the outside are not walls between rooms and are left
+out. Collinear unit edges are merged into maximal segments in metres.
+
+A copied floor repeats its original's layout, so it keeps every wall of it; what any floor passes
+up is its first round's walls. The floor above keeps them where its outline (minus its cores)
+contains them. For the floor above to respect them, its own first round must fall into the same
+compartments, so :class:`SkeletonSeedPlanner` seeds each of its first-round children inside the
+region the same child took on the floor below; areas are matched by :func:`retarget_first_round`.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+
+import numpy as np
+from shapely.geometry import LineString, MultiLineString, Polygon, box
+from shapely.ops import linemerge, polylabel, unary_union
+
+from mansion.floorplan.seeds import ChildSeed, SeedPlan, SeedRequest
+from mansion.models import FloorLayout, Footprint, RoomGraph
+from mansion.models.footprint import Point
+
+__all__ = [
+    "SkeletonSeedPlanner",
+    "carry_walls",
+    "first_round_groups",
+    "first_round_regions",
+    "first_round_walls",
+    "retarget_first_round",
+]
+
+Segment = tuple[Point, Point]
+
+
+def first_round_groups(graph: RoomGraph) -> dict[str, str]:
+    """Room id → the first-round room whose region it was cut from (the hub maps to itself).
+
+    Follows the solver's cut rounds: a breadth-first search from the hub, cores never parents.
+    """
+    hub = graph.hub.id
+    cores = {n.id for n in graph.nodes if n.is_core}
+    group = {hub: hub}
+    queue = deque([hub])
+    while queue:
+        parent = queue.popleft()
+        for child in graph.neighbours(parent):
+            if child in group or child in cores:
+                continue
+            group[child] = child if parent == hub else group[parent]
+            queue.append(child)
+    return group
+
+
+def _group_grid(layout: FloorLayout, graph: RoomGraph) -> tuple[np.ndarray, list[str]]:
+    groups = first_round_groups(graph)
+    names = sorted(set(groups.values()))
+    index = {g: i for i, g in enumerate(names)}
+    lut = np.array([index.get(groups.get(rid, ""), -1) for rid in layout.grid.ids] + [-1], dtype=np.int32)
+    labels = layout.grid.array()
+    return np.where(labels >= 0, lut[labels], -1), names
+
+
+def first_round_walls(layout: FloorLayout, graph: RoomGraph) -> list[Segment]:
+    """The walls between the first round's regions, as maximal axis-aligned segments."""
+    g, _ = _group_grid(layout, graph)
+    s = layout.grid.cell_size
+    ox, oy = layout.grid.origin
+    pieces: list[LineString] = []
+    # Vertical walls: between columns c and c+1 of a row.
+    diff = (g[:, :-1] != g[:, 1:]) & (g[:, :-1] >= 0) & (g[:, 1:] >= 0)
+    for r, c in zip(*np.nonzero(diff)):
+        x = ox + (c + 1) * s
+        pieces.append(LineString([(x, oy + r * s), (x, oy + (r + 1) * s)]))
+    diff = (g[:-1, :] != g[1:, :]) & (g[:-1, :] >= 0) & (g[1:, :] >= 0)
+    for r, c in zip(*np.nonzero(diff)):
+        y = oy + (r + 1) * s
+        pieces.append(LineString([(ox + c * s, y), (ox + (c + 1) * s, y)]))
+    return _segments(unary_union(pieces)) if pieces else []
+
+
+def _segments(geom: object) -> list[Segment]:
+    merged = linemerge(geom) if not isinstance(geom, LineString) else geom
+    lines = [merged] if isinstance(merged, LineString) else list(getattr(merged, "geoms", []))
+    out: list[Segment] = []
+    for line in lines:
+        coords = list(line.coords)
+        # Split merged polylines at their corners: fixed walls are straight segments.
+        start = coords[0]
+        for i in range(1, len(coords)):
+            a, b = coords[i - 1], coords[i]
+            nxt = coords[i + 1] if i + 1 < len(coords) else None
+            straight = nxt is not None and (
+                (a[0] == b[0] == nxt[0]) or (a[1] == b[1] == nxt[1])
+            )
+            if not straight:
+                out.append(((float(start[0]), float(start[1])), (float(b[0]), float(b[1]))))
+                start = b
+    return sorted(out)
+
+
+def carry_walls(walls: list[Segment], footprint: Footprint) -> list[Segment]:
+    """The part of ``walls`` inside the floor's free region (outline minus holes and cores),
+    not on its boundary."""
+    region = Polygon(footprint.polygon, footprint.holes)
+    for core in footprint.cores:
+        region = region.difference(box(core.x[0], core.y[0], core.x[1], core.y[1]))
+    kept = []
+    for a, b in walls:
+        inside = LineString([a, b]).intersection(region).difference(region.boundary)
+        if inside.is_empty:
+            continue
+        kept += _segments(inside if isinstance(inside, (LineString, MultiLineString)) else unary_union(
+            [g for g in getattr(inside, "geoms", []) if isinstance(g, LineString)]
+        ))
+    return [(a, b) for a, b in kept if a != b]
+
+
+def first_round_regions(layout: FloorLayout, graph: RoomGraph) -> dict[str, tuple[float, Point]]:
+    """First-round room id → (area of its region in m², a point well inside it)."""
+    g, names = _group_grid(layout, graph)
+    s = layout.grid.cell_size
+    ox, oy = layout.grid.origin
+    out: dict[str, tuple[float, Point]] = {}
+    for i, name in enumerate(names):
+        rows, cols = np.nonzero(g == i)
+        if rows.size == 0:
+            continue
+        cells = unary_union(
+            [box(ox + c * s, oy + r * s, ox + (c + 1) * s, oy + (r + 1) * s) for r, c in zip(rows, cols)]
+        )
+        poly = cells if isinstance(cells, Polygon) else max(cells.geoms, key=lambda p: p.area)
+        pole = polylabel(poly, tolerance=s / 2)
+        out[name] = (float(rows.size * s * s), (float(pole.x), float(pole.y)))
+    return out
+
+
+def retarget_first_round(graph: RoomGraph, areas: dict[str, float]) -> RoomGraph:
+    """Scale each first-round subtree of ``graph`` (and the hub) so that it covers the area the
+    same room's region had on the floor below."""
+    groups = first_round_groups(graph)
+    totals: dict[str, float] = {}
+    for node in graph.nodes:
+        if node.id in groups:
+            totals[groups[node.id]] = totals.get(groups[node.id], 0.0) + node.area
+    nodes = []
+    for node in graph.nodes:
+        grp = groups.get(node.id)
+        if grp is not None and grp in areas and totals[grp] > 0:
+            if grp == node.id and node.id == graph.hub.id:
+                new_area = areas[grp]
+            else:
+                new_area = node.area * areas[grp] / totals[grp]
+            node = node.model_copy(update={"area": new_area})
+        nodes.append(node)
+    return RoomGraph(nodes=nodes, edges=graph.edges)
+
+
+class SkeletonSeedPlanner:
+    """Seeds the first round at the regions of the floor below; every other round spreads its
+    children over the parent region (farthest-point sampling, larger rooms first)."""
+
+    def __init__(self, hub: str, points: dict[str, Point]) -> None:
+        self.hub = hub
+        self.points = points
+
+    def plan(self, request: SeedRequest) -> SeedPlan:
+        seeds: dict[str, ChildSeed] = {}
+        pending = []
+        for child in request.children:
+            if request.parent == self.hub and child.id in self.points:
+                seeds[child.id] = ChildSeed(point=self.points[child.id])
+            else:
+                pending.append(child)
+        if pending:
+            region = Polygon(request.region.polygon, request.region.holes)
+            x0, y0, x1, y1 = region.bounds
+            step = request.cell_size
+            xs, ys = np.meshgrid(np.arange(x0 + step / 2, x1, step), np.arange(y0 + step / 2, y1, step))
+            import shapely
+
+            inside = shapely.contains_xy(region, xs.ravel(), ys.ravel())
+            cands = np.column_stack([xs.ravel()[inside], ys.ravel()[inside]])
+            if cands.size == 0:
+                c = region.representative_point()
+                cands = np.array([[c.x, c.y]])
+            chosen = [np.asarray(p) for p in seeds.values() if p.point is not None]
+            dist = np.full(len(cands), np.inf)
+            for p in chosen:
+                dist = np.minimum(dist, np.hypot(*(cands - p).T))
+            if not chosen:
+                centre = np.array([region.centroid.x, region.centroid.y])
+                dist = np.hypot(*(cands - centre).T)
+            for child in sorted(pending, key=lambda c: -c.target_area):
+                k = int(np.argmax(dist))
+                p = cands[k]
+                seeds[child.id] = ChildSeed(point=(float(p[0]), float(p[1])))
+                dist = np.minimum(dist, np.hypot(*(cands - p).T))
+        return SeedPlan(seeds=seeds)

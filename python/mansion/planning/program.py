@@ -1,0 +1,478 @@
+"""The offline building planner: description → :class:`BuildingProgram`.
+
+Steps, in the paper's order: resolve the numeric constraints (floors and area per floor, from the
+arguments, else the description, else the building type's usual range and the seed), synthesise
+the outlines, choose the vertical connectivity, place the cores, then write each floor's room
+program (its first room the circulation hub) and mark identical floors as copies.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections import Counter
+
+from shapely.geometry import Polygon
+
+from mansion.exceptions import InvalidInputError, PlannerError
+from mansion.models.building import (
+    BuildingCore,
+    BuildingProgram,
+    ConnectivityMethod,
+    FloorCopy,
+    FloorProgram,
+    Palette,
+    ProgramRoom,
+)
+from mansion.planning.bays import BAY_TYPOLOGIES, BayPlan, BayProgram
+from mansion.planning.cores import CoreRequest, place_cores
+from mansion.planning.description import Placement, Request
+from mansion.planning.footprints import Outline, stack_outlines
+from mansion.planning.palette import room_materials
+from mansion.planning.typologies import TYPOLOGIES, FloorTemplate, Rm, Typology, Zone
+from mansion.planning.vocabulary import room_kind
+
+__all__ = [
+    "DEFAULT_MAX_FLOOR_AREA",
+    "MAX_FLOORS",
+    "ProgramOptions",
+    "plan_program",
+    "resolve_constraints",
+    "typology",
+]
+
+MAX_FLOORS = 10
+DEFAULT_MAX_FLOOR_AREA = 500.0
+#: Rooms one sub-hub may serve before they are split into wings; more makes cut rounds hard.
+MAX_ZONE_ROOMS = 6
+#: Rooms (zones and cores included) the floor's hub may serve directly.
+MAX_HUB_CHILDREN = 9
+
+
+def typology(key: str) -> Typology:
+    if key in TYPOLOGIES:
+        return TYPOLOGIES[key]
+    if key in BAY_TYPOLOGIES:
+        return BAY_TYPOLOGIES[key][0]
+    known = ", ".join(sorted([*TYPOLOGIES, *BAY_TYPOLOGIES]))
+    raise InvalidInputError(f"unknown building type {key!r}; known: {known}")
+
+
+class ProgramOptions:
+    """The numeric constraints the caller fixed (None: resolve them)."""
+
+    def __init__(
+        self,
+        *,
+        floors: int | None = None,
+        area: float | None = None,
+        outline: Outline | None = None,
+        max_floor_area: float = DEFAULT_MAX_FLOOR_AREA,
+        load_bearing: bool | None = None,
+    ) -> None:
+        self.floors = floors
+        self.area = area
+        self.outline = outline
+        self.max_floor_area = max_floor_area
+        self.load_bearing = load_bearing
+
+
+def resolve_constraints(
+    request: Request, typ: Typology, options: ProgramOptions, rng: random.Random
+) -> tuple[int, float]:
+    """The paper's ResolveNumericConstraints: (floors, gross area per floor)."""
+    floors = options.floors if options.floors is not None else request.floors
+    if floors is None:
+        lowest = max(
+            [typ.floors[0]] + [p.floor + 1 for p in request.placements if p.floor not in (None, -1)]
+        )
+        floors = rng.randint(min(lowest, MAX_FLOORS), min(MAX_FLOORS, max(lowest, typ.floors[1])))
+    if not 1 <= floors <= MAX_FLOORS:
+        raise InvalidInputError(f"a building has 1 to {MAX_FLOORS} floors, asked for {floors}")
+    for p in request.placements:
+        if p.floor is not None and p.floor >= floors:
+            raise InvalidInputError(
+                f"the description puts {p.room_type} on floor {p.floor + 1}, "
+                f"but the building has {floors} floors"
+            )
+    if options.outline is not None:
+        area = Polygon(*options.outline).area
+    elif options.area is not None:
+        area = options.area
+        if area > options.max_floor_area:
+            raise InvalidInputError(
+                f"area {area:g} m² per floor exceeds the cap of {options.max_floor_area:g} m²"
+            )
+    elif request.area_per_floor is not None:
+        area = min(request.area_per_floor, options.max_floor_area)
+    elif request.total_area is not None:
+        area = min(request.total_area / floors, options.max_floor_area)
+    else:
+        area = rng.uniform(*typ.area)
+    if area < 20:
+        raise InvalidInputError(f"{area:g} m² per floor is too small for a building floor (< 20 m²)")
+    return floors, min(area, options.max_floor_area) if options.outline is None else area
+
+
+def _connectivity(
+    request: Request, typ: Typology, floors: int
+) -> tuple[ConnectivityMethod | None, int, int]:
+    """(method, stairs, elevators) from the building type, its height and the description."""
+    if floors == 1:
+        return None, 0, 0
+    elevators = request.elevators
+    if elevators is None:
+        elevators = 0 if floors <= typ.stair_only_floors else (2 if floors >= 6 and typ.family != "residential" else 1)
+    stairs = request.stairs
+    if stairs is None:
+        # Large public floors need two escape stairs; an elevator-only house is asked for, not assumed.
+        stairs = 2 if typ.family == "public" and typ.area[0] >= 300 and floors >= 3 else 1
+        if request.elevators and request.stairs is None and "only" in request.text.lower() and "elevator" in request.text.lower():
+            stairs = 0
+    if stairs == 0 and elevators == 0:
+        raise InvalidInputError(
+            f"a {floors}-floor building needs a stair or an elevator, and the description rules out both"
+        )
+    method: ConnectivityMethod = (
+        "stair_and_elevator" if stairs and elevators else "stair" if stairs else "elevator"
+    )
+    return method, stairs, elevators
+
+
+def _core_requests(typ: Typology, stairs: int, elevators: int) -> list[CoreRequest]:
+    small = typ.family == "residential" and typ.key != "apartment_block"
+    stair = (3, 4) if small else (3, 6)
+    lift = (2, 2) if small else (3, 3)
+    out: list[CoreRequest] = [(f"stair_{i + 1}", "stair", stair) for i in range(stairs)]
+    out += [(f"elevator_{i + 1}", "elevator", lift) for i in range(elevators)]
+    return out
+
+
+def _role(typ: Typology, index: int, floors: int) -> str:
+    if index == 0:
+        return "ground"
+    if index == floors - 1 and floors > 2:
+        return "top"
+    return "upper"
+
+
+def _template(typ: Typology, role: str) -> FloorTemplate:
+    if role == "ground" or typ.upper is None:
+        return typ.ground
+    if role == "top" and typ.top is not None:
+        return typ.top
+    return typ.upper
+
+
+def _on_floor(p: Placement, index: int, floors: int) -> bool:
+    return p.per_floor or p.floor == index or (p.floor == -1 and index == floors - 1)
+
+
+def _apply_placements(
+    rules: list[Rm], placements: list[Placement], index: int, floors: int
+) -> list[Rm]:
+    """The description's specifics: a placed room type gets exactly the asked count on its floor
+    and leaves the other floors (unless it is a fill room there, or asked on every floor)."""
+    out = list(rules)
+    for p in placements:
+        if _on_floor(p, index, floors):
+            same = [r for r in out if r.room_type == p.room_type]
+            zone = same[0].zone if same else None
+            out = [r for r in out if r.room_type != p.room_type]
+            out.append(Rm(p.room_type, p.count, zone=zone))
+        elif not p.per_floor:
+            out = [r for r in out if r.room_type != p.room_type or r.fill]
+    return out
+
+
+def _room_ids(rooms: list[tuple[str, float, str | None]]) -> list[str]:
+    totals = Counter(t for t, _, _ in rooms)
+    seen: Counter[str] = Counter()
+    ids = []
+    for t, _, _ in rooms:
+        seen[t] += 1
+        ids.append(t if totals[t] == 1 else f"{t}_{seen[t]}")
+    return ids
+
+
+def _generic_rooms(
+    template: FloorTemplate, rules: list[Rm], free: float, reserve: float, where: str
+) -> tuple[str, float, list[tuple[str, float, str | None]], dict[str, Zone]]:
+    """Hub type and area, rooms (type, area, zone) and zones of a template floor of ``free`` m²."""
+    zones = {z.id: z for z in template.zones}
+    hub_kind = room_kind(template.hub)
+    circulation_hub = hub_kind.role == "circulation"
+
+    def zone_hub_area(z: Zone) -> float:
+        return z.hub_area if z.hub_area is not None else room_kind(z.hub).area
+
+    def split(rs: list[Rm]) -> tuple[float, float]:
+        """(fixed circulation area, scalable sub-hub area): circulation sub-hubs keep their size,
+        room-like sub-hubs (a dining room) scale with the rooms."""
+        used = {r.zone for r in rs if r.zone}
+        circ = sum(zone_hub_area(zones[z]) for z in used if room_kind(zones[z].hub).role == "circulation")
+        rooms = sum(zone_hub_area(zones[z]) for z in used if room_kind(zones[z].hub).role != "circulation")
+        return circ, rooms
+
+    active = list(rules)
+    while True:
+        circ, zone_rooms = split(active)
+        # A corridor or lobby hub is the circulation reserve; a hub that is a room in its own
+        # right (a living room, a sales floor) scales with the other rooms.
+        hub_area = max(reserve * free - circ, 0.4 * reserve * free) if circulation_hub else 0.0
+        budget = free - hub_area - circ
+        fixed = sum(r.count * (r.area or room_kind(r.room_type).area) for r in active if not r.fill)
+        fixed += zone_rooms + (0.0 if circulation_hub else hub_kind.area)
+        fills = [r for r in active if r.fill]
+        counts = {id(r): r.count for r in active}
+        if fills:
+            unit = sum(r.area or room_kind(r.room_type).area for r in fills) / len(fills)
+            extra = max(0, math.floor((budget - fixed) / unit) - sum(r.count for r in fills))
+            for k in range(extra):
+                counts[id(fills[k % len(fills)])] += 1
+        total = fixed + sum(counts[id(r)] * (r.area or room_kind(r.room_type).area) for r in fills)
+        scale = budget / total if total > 0 else 0.0
+        if scale >= 0.7 or not any(r.optional for r in active):
+            break
+        # Too many rooms for the floor: drop the last optional one and try again.
+        last = max(i for i, r in enumerate(active) if r.optional)
+        active.pop(last)
+    if scale < 0.55:
+        raise PlannerError(
+            f"{where}: {free:.0f} m² of free area cannot hold its program "
+            f"({total:.0f} m² of rooms at usual sizes); give a larger area or fewer rooms"
+        )
+    # A floor larger than its program: rooms grow up to 60 %, the hub takes the rest.
+    if scale > 1.6:
+        hub_area += (scale - 1.6) * total
+        scale = 1.6
+    if not circulation_hub:
+        hub_area += hub_kind.area * scale
+    zones = {
+        zid: z if room_kind(z.hub).role == "circulation" else Zone(z.id, z.hub, zone_hub_area(z) * scale)
+        for zid, z in zones.items()
+    }
+    rooms = [
+        (r.room_type, (r.area or room_kind(r.room_type).area) * scale, r.zone)
+        for r in active
+        for _ in range(counts[id(r)])
+    ]
+    return template.hub, hub_area, rooms, zones
+
+
+def _split_wings(
+    hub_area: float,
+    rooms: list[tuple[str, float, str | None]],
+    zones: dict[str, Zone],
+) -> tuple[float, list[tuple[str, float, str | None]], dict[str, Zone]]:
+    """Split zones with more than MAX_ZONE_ROOMS rooms into wings, and give a hub with too many
+    children corridor wings for its most repeated room type, so every cut round stays small."""
+    zones = dict(zones)
+    out: list[tuple[str, float, str | None]] = []
+    by_zone: dict[str, list[tuple[str, float, str | None]]] = {}
+    direct = [r for r in rooms if r[2] is None]
+    for room in rooms:
+        if room[2] is not None:
+            by_zone.setdefault(room[2], []).append(room)
+    n_children = len(direct) + len(by_zone)
+    if n_children > MAX_HUB_CHILDREN:
+        counts = Counter(t for t, _, _ in direct)
+        common, _ = counts.most_common(1)[0]
+        moved = [r for r in direct if r[0] == common]
+        keep = [r for r in direct if r[0] != common]
+        if len(moved) >= 2:
+            direct = keep
+            by_zone["wing"] = [(t, a, "wing") for t, a, _ in moved]
+            share = min(0.35 * hub_area, 4.0 * len(moved))
+            zones["wing"] = Zone("wing", "corridor", share)
+            hub_area -= share
+    for zid, zrooms in by_zone.items():
+        zone = zones[zid]
+        n_wings = math.ceil(len(zrooms) / MAX_ZONE_ROOMS)
+        if n_wings == 1:
+            out += zrooms
+            continue
+        hub = zone.hub_area if zone.hub_area is not None else room_kind(zone.hub).area
+        del zones[zid]
+        # Rooms of the commonest type spread over the wings; the others stay in the first wing.
+        for k in range(n_wings):
+            zones[f"{zid}_{k + 1}"] = Zone(f"{zid}_{k + 1}", zone.hub, max(hub / n_wings * 1.3, 6.0))
+        for i, (t, a, _) in enumerate(zrooms):
+            out.append((t, a, f"{zid}_{i % n_wings + 1}"))
+    return hub_area, direct + out, zones
+
+
+def _floor_program(
+    index: int,
+    requirement: str,
+    outline: Outline,
+    hub: str,
+    hub_area: float,
+    rooms: list[tuple[str, float, str | None]],
+    zones: dict[str, Zone],
+    palette: Palette,
+    free: float,
+    circulation: float,
+) -> FloorProgram:
+    """Assemble the program: the hub first, then each zone's sub-hub followed by its rooms."""
+    def card(rid: str, room_type: str, area: float, zone: str | None, notes: str = "") -> ProgramRoom:
+        floor, wall = room_materials(palette, room_type)
+        return ProgramRoom(
+            id=rid, room_type=room_type, area=round(area, 2), zone=zone,
+            floor_material=floor, wall_material=wall, notes=notes,
+        )
+
+    ordered: list[tuple[str, float, str | None]] = [r for r in rooms if r[2] is None]
+    for zid in zones:
+        ordered += [r for r in rooms if r[2] == zid]
+    ids = _room_ids(ordered)
+    program = [card(hub if hub not in ids else f"{hub}_hub", hub, hub_area, None, "circulation hub")]
+    taken = {program[0].id, *ids}
+    for zid, zone in zones.items():
+        if not any(r[2] == zid for r in rooms):
+            continue
+        zone_hub_area = zone.hub_area if zone.hub_area is not None else room_kind(zone.hub).area
+        rid = zid if zid not in taken else f"{zid}_zone"
+        taken.add(rid)
+        program.append(card(rid, zone.hub, zone_hub_area, zid, f"sub-hub of zone {zid}"))
+        program += [card(i, t, a, z) for i, (t, a, z) in zip(ids, ordered) if z == zid]
+    program[1:1] = [card(i, t, a, z) for i, (t, a, z) in zip(ids, ordered) if z is None]
+    gross = Polygon(*outline).area
+    return FloorProgram(
+        index=index, requirement=requirement, outline=outline[0], holes=outline[1],
+        gross_floor_area=gross, rooms=program, reserve_ratio=round(circulation / free, 4),
+    )
+
+
+def _circulation(program_rooms: list[ProgramRoom]) -> float:
+    return sum(r.area for i, r in enumerate(program_rooms) if i == 0 or room_kind(r.room_type).role == "circulation" and r.notes.startswith("sub-hub"))
+
+
+def _bay_floor(
+    plan: BayPlan, role: str, rules_extra: list[Rm], n_bays: int, bay_area: float,
+    services_area: float, hub_area: float, rng: random.Random,
+) -> tuple[str, float, list[tuple[str, float, str | None]], dict[str, Zone]]:
+    """A bay floor: the row of bays, each with the use its role and size call for."""
+    uses: list[BayProgram] = list(plan.leading.get(role, ()))[:n_bays]
+    while len(uses) < n_bays:
+        fitting = [p for p in plan.default if p.min_area <= bay_area] or [plan.default[0]]
+        uses.append(rng.choice(fitting))
+    rooms: list[tuple[str, float, str | None]] = []
+    zones: dict[str, Zone] = {}
+    extras = list(rules_extra)
+    for k, use in enumerate(uses):
+        zid = f"bay_{k + 1}"
+        own = [(r.room_type, r.area or room_kind(r.room_type).area) for r in use.rooms for _ in range(r.count)]
+        # The description's rooms go into the largest general bays, round-robin.
+        if extras and k >= len(plan.leading.get(role, ())):
+            r = extras.pop(0)
+            own = [o for o in own if o[0] != r.room_type]
+            own += [(r.room_type, r.area or room_kind(r.room_type).area)] * r.count
+        hub_share = 0.12 if room_kind(use.hub).role == "circulation" else 0.4
+        scale = bay_area * (1 - hub_share) / sum(a for _, a in own)
+        zones[zid] = Zone(zid, use.hub, bay_area * hub_share)
+        rooms += [(t, a * scale, zid) for t, a in own]
+    if plan.services is not None:
+        zid = f"bay_{n_bays + 1}"
+        own = [(r.room_type, r.area or room_kind(r.room_type).area) for r in plan.services.rooms]
+        scale = services_area * 0.8 / sum(a for _, a in own)
+        zones[zid] = Zone(zid, plan.services.hub, services_area * 0.2)
+        rooms += [(t, a * scale, zid) for t, a in own]
+    # Rooms asked for that found no general bay on this floor still go somewhere: the first bay.
+    for r in extras:
+        rooms += [(r.room_type, r.area or room_kind(r.room_type).area, "bay_1")] * r.count
+    return plan.floor_hub[role], hub_area, rooms, zones
+
+
+def plan_program(
+    request: Request,
+    building_type: str,
+    options: ProgramOptions,
+    palette: Palette,
+    rng: random.Random,
+) -> BuildingProgram:
+    """The whole building program; see the module doc."""
+    typ = typology(building_type)
+    bay_plan = BAY_TYPOLOGIES[building_type][1] if building_type in BAY_TYPOLOGIES else None
+    floors, area = resolve_constraints(request, typ, options, rng)
+    min_arm = 4.0 if typ.family == "residential" and bay_plan is None else 8.0
+
+    method, n_stairs, n_elevators = _connectivity(request, typ, floors)
+    requests = _core_requests(typ, n_stairs, n_elevators)
+    cores: list[BuildingCore] = []
+    outlines: list[Outline] = []
+    for attempt in range(12):
+        if options.outline is not None:
+            outlines = [options.outline] * floors
+        else:
+            shape = rng.choice(typ.shapes) if area >= 120 or attempt else "rectangle"
+            if shape == "courtyard" and area < 350:
+                shape = "rectangle"
+            stack = rng.choice(typ.stacks) if floors > 1 else "uniform"
+            outlines = stack_outlines(shape, stack, floors, area, rng, min_arm=min_arm)
+        try:
+            cores = place_cores(outlines, requests, list(range(floors)), rng) if requests else []
+            break
+        except PlannerError:
+            if options.outline is not None or attempt == 11:
+                raise
+
+    load_bearing = typ.load_bearing if options.load_bearing is None else options.load_bearing
+    reserve = rng.uniform(*typ.reserve)
+    floor_programs: list[FloorProgram | FloorCopy] = []
+    originals: list[tuple[tuple, int]] = []
+
+    # A bay typology keeps one row of bays for the whole building, sized on the smallest floor.
+    n_bays, bay_area = 0, 0.0
+    if bay_plan is not None:
+        smallest = min(Polygon(*o).area for o in outlines) - sum(
+            (c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in cores
+        )
+        rooms_area = smallest * (1 - reserve) - bay_plan.services_area
+        n_bays = max(2, min(6, round(rooms_area / rng.uniform(*bay_plan.bay_area))))
+        bay_area = rooms_area / n_bays
+
+    for index in range(floors):
+        role = _role(typ, index, floors)
+        outline = outlines[index]
+        on_floor = [c for c in cores if index in c.floors]
+        free = Polygon(*outline).area - sum((c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in on_floor)
+        where = f"floor {index} of the {building_type.replace('_', ' ')}"
+        if bay_plan is not None:
+            extras = [
+                Rm(p.room_type, p.count) for p in request.placements if _on_floor(p, index, floors)
+            ]
+            used = n_bays * bay_area + bay_plan.services_area
+            hub, hub_area, rooms, zones = _bay_floor(
+                bay_plan, role, extras, n_bays, bay_area, bay_plan.services_area, free - used, rng
+            )
+        else:
+            template = _template(typ, role)
+            rules = _apply_placements(list(template.rooms), request.placements, index, floors)
+            hub, hub_area, rooms, zones = _generic_rooms(template, rules, free, reserve, where)
+            hub_area, rooms, zones = _split_wings(hub_area, rooms, zones)
+        requirement = f"{role} floor of a {building_type.replace('_', ' ')}: {typ.description}"
+        program = _floor_program(
+            index, requirement, outline, hub, hub_area, rooms, zones, palette, free, 0.0
+        )
+        program = program.model_copy(
+            update={"reserve_ratio": round(min(1.0, _circulation(program.rooms) / free), 4)}
+        )
+        # Identical floors (same outline, same rooms) are written as the paper's copies.
+        key = (tuple(map(tuple, outline[0])), tuple((r.id, r.room_type, r.area, r.zone) for r in program.rooms))
+        source = next((i for k, i in originals if k == key), None)
+        if source is not None and index > 0 and (typ.copies or bay_plan is not None):
+            floor_programs.append(FloorCopy(index=index, copy=source))
+        else:
+            originals.append((key, index))
+            floor_programs.append(program)
+
+    reasoning = (
+        f"{typ.key.replace('_', ' ')}: {typ.description}. {floors} floor(s) of about {area:.0f} m²; "
+        f"{method or 'no vertical core'}; circulation reserve about {reserve:.0%}."
+    )
+    return BuildingProgram(
+        building_type=building_type, reasoning=reasoning, floor_count=floors, area_per_floor=area,
+        method=method, cores=cores, floors=floor_programs, load_bearing_walls=load_bearing,
+    )
+

@@ -1,0 +1,74 @@
+"""The offline floor planner: a floor's program → its room graph (the paper's bubble graph).
+
+The hub (the program's first room) is the ``main`` node; every core on the floor is a fixed node
+reached from the hub through a door; each zone's sub-hub is an ``area`` node reached from the hub,
+with the zone's rooms reached from it; the other rooms hang off the hub. Rooms whose type is open
+by nature (a kitchenette, a checkout area) open to their parent instead of a door. The typology's
+adjacencies ("kitchen beside the dining room") become ``adjacent`` edges where both rooms exist
+and no edge joins them yet.
+"""
+
+from __future__ import annotations
+
+from mansion.models.building import BuildingCore, FloorProgram
+from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
+from mansion.planning.vocabulary import room_kind
+
+__all__ = ["floor_graph"]
+
+
+def floor_graph(
+    program: FloorProgram,
+    cores: list[BuildingCore],
+    adjacent: tuple[tuple[str, str], ...] = (),
+) -> RoomGraph:
+    """The room graph of ``program`` with the cores that serve its floor."""
+    hub = program.rooms[0]
+    nodes = [
+        RoomNode(
+            id=hub.id, type="main", area=hub.area, room_type=hub.room_type,
+            floor_material=hub.floor_material, wall_material=hub.wall_material,
+            open_relation="open",
+        )
+    ]
+    edges: list[RoomEdge] = []
+    for core in cores:
+        if program.index in core.floors:
+            nodes.append(
+                RoomNode(
+                    id=core.id, type=core.type,
+                    area=(core.x[1] - core.x[0]) * (core.y[1] - core.y[0]), room_type=core.type,
+                    floor_material=hub.floor_material, wall_material=hub.wall_material,
+                    open_relation="door",
+                )
+            )
+            edges.append(RoomEdge(source=hub.id, target=core.id, kind="access"))
+    zone_hub: dict[str, str] = {}
+    for room in program.rooms[1:]:
+        is_sub_hub = room.zone is not None and room.zone not in zone_hub
+        if is_sub_hub:
+            assert room.zone is not None
+            zone_hub[room.zone] = room.id
+            parent = hub.id
+        else:
+            parent = zone_hub[room.zone] if room.zone is not None else hub.id
+        nodes.append(
+            RoomNode(
+                id=room.id, type="area" if is_sub_hub else "Entities", area=room.area,
+                room_type=room.room_type, floor_material=room.floor_material,
+                wall_material=room.wall_material,
+                open_relation="open" if room_kind(room.room_type).open else "door",
+            )
+        )
+        edges.append(RoomEdge(source=parent, target=room.id, kind="access"))
+    joined = {frozenset((e.source, e.target)) for e in edges}
+    by_type: dict[str, list[str]] = {}
+    for node in nodes:
+        by_type.setdefault(node.room_type, []).append(node.id)
+    for a, b in adjacent:
+        for ida in by_type.get(a, [])[:1]:
+            for idb in by_type.get(b, [])[:1]:
+                if frozenset((ida, idb)) not in joined:
+                    edges.append(RoomEdge(source=ida, target=idb, kind="adjacent"))
+                    joined.add(frozenset((ida, idb)))
+    return RoomGraph(nodes=nodes, edges=edges)

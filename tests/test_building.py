@@ -1,0 +1,296 @@
+"""generate_building and its planners: programs per building type, specifics, footprints, cores,
+load-bearing walls, determinism, a sample of the benchmark's hundred, and the JSON format."""
+
+from __future__ import annotations
+
+import json
+import sys
+from collections import Counter
+from pathlib import Path
+
+import pytest
+from shapely.geometry import Polygon, box
+
+from mansion.building import check_building, generate_building
+from mansion.building.load_bearing import first_round_walls
+from mansion.exceptions import InfeasibleLayoutError, InvalidInputError, PlannerError
+from mansion.models.building import Building, FloorCopy
+from mansion.planning import parse_description
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benches" / "python"))
+from bench_generate import TYPES, case, description  # noqa: E402
+
+
+def _types(b: Building, index: int) -> Counter[str]:
+    return Counter(n.room_type for n in b.floors[index].graph.nodes)
+
+
+def _all_types(b: Building) -> Counter[str]:
+    return sum((_types(b, f.index) for f in b.floors), Counter())
+
+
+# -- the description ------------------------------------------------------------------------------
+
+
+def test_description_reads_floors_cores_and_specifics() -> None:
+    r = parse_description("A four-storey hospital with two elevators and a pharmacy on the ground floor")
+    assert (r.building_type, r.floors, r.elevators) == ("hospital", 4, 2)
+    assert [(p.room_type, p.count, p.floor) for p in r.placements] == [("pharmacy", 1, 0)]
+    r = parse_description("a 4-story school with three classrooms per floor and a gym on the top floor")
+    assert (r.building_type, r.floors) == ("school", 4)
+    got = {(p.room_type, p.count, p.floor, p.per_floor) for p in r.placements}
+    assert got == {("classroom", 3, None, True), ("gym", 1, -1, False)}
+    r = parse_description("an office of 400 m2 per floor, no elevator")
+    assert (r.building_type, r.area_per_floor, r.elevators) == ("office", 400.0, 0)
+
+
+# -- rooms each type needs ------------------------------------------------------------------------
+
+NEEDS = {
+    "studio": {"studio_room", "kitchenette", "bathroom"},
+    "family_apartment": {"living_room", "kitchen", "dining_room", "master_bedroom", "bathroom"},
+    "townhouse": {"living_room", "kitchen", "dining_room", "master_bedroom", "bathroom", "stair"},
+    "villa": {"living_room", "kitchen", "garage", "master_bedroom", "ensuite", "stair"},
+    "apartment_block": {"unit_living", "kitchen", "bathroom", "mail_room", "stair", "elevator"},
+    "office": {"open_office", "meeting_room", "toilet", "reception", "pantry"},
+    "hospital": {"ward", "nurse_station", "pharmacy", "emergency_room", "toilet", "elevator"},
+    "school": {"classroom", "toilet", "head_office"},
+    "kindergarten": {"group_room", "sleep_room", "washroom", "kitchen"},
+    "supermarket": {"sales_floor", "checkout_area", "cold_storage", "freezer_room", "warehouse"},
+    "library": {"circulation_desk", "reading_room", "stacks", "toilet"},
+    "restaurant": {"dining_hall", "commercial_kitchen", "toilet", "dry_store"},
+    "hotel": {"lobby", "reception", "guest_room", "housekeeping", "restaurant"},
+    "shopping_mall": {"atrium", "shop", "anchor_store", "toilet", "food_court"},
+}
+
+
+@pytest.mark.parametrize("kind", TYPES)
+def test_each_type_has_the_rooms_it_needs(kind: str) -> None:
+    from mansion.planning.program import typology
+
+    floors = min(4, typology(kind).floors[1])
+    b = generate_building(f"a {kind.replace('_', ' ')}", building_type=kind, floors=floors, seed=3)
+    missing = NEEDS[kind] - set(_all_types(b))
+    assert not missing, f"{kind} lacks {missing}"
+    for f in b.floors:
+        assert f.graph.nodes[0].type == "main" and f.graph.hub.id == f.graph.nodes[0].id
+
+
+def test_hospital_wards_off_a_corridor_and_toilets_on_every_floor() -> None:
+    b = generate_building("a four-storey hospital", seed=1)
+    for f in b.floors:
+        assert _types(b, f.index)["toilet"] >= 1
+    upper = b.floors[1].graph
+    for ward in (n for n in upper.nodes if n.room_type == "ward"):
+        parents = [upper.node(x).room_type for x in upper.neighbours(ward.id)]
+        assert parents and all(p in ("ward_corridor", "corridor") for p in parents)
+
+
+def test_school_toilets_on_every_floor() -> None:
+    b = generate_building("a three-storey school", seed=2)
+    assert all(_types(b, f.index)["toilet"] >= 1 for f in b.floors)
+
+
+# -- the description's specifics ------------------------------------------------------------------
+
+
+def test_specifics_hospital() -> None:
+    b = generate_building(
+        "a four-storey hospital with two elevators and a pharmacy on the ground floor", seed=0
+    )
+    assert b.program.floor_count == 4 == len(b.floors)
+    assert sum(c.type == "elevator" for c in b.program.cores) == 2
+    assert _types(b, 0)["pharmacy"] == 1
+    assert all(_types(b, i)["pharmacy"] == 0 for i in range(1, 4))
+
+
+def test_specifics_school_counts_and_top_floor() -> None:
+    b = generate_building(
+        "a three-storey school with three classrooms per floor and a gym on the top floor", seed=4
+    )
+    assert all(_types(b, f.index)["classroom"] == 3 for f in b.floors)
+    assert _types(b, 2)["gym"] == 1 and _types(b, 0)["gym"] == 0
+
+
+def test_specifics_office_top_floor_in_a_bay_building() -> None:
+    b = generate_building("a five-storey office with a gym on the top floor", seed=5)
+    assert b.program.floor_count == 5
+    assert _types(b, 4)["gym"] == 1 and sum(_types(b, i)["gym"] for i in range(4)) == 0
+
+
+def test_arguments_override_the_description() -> None:
+    b = generate_building("a four-storey hospital", floors=2, area=300, seed=0)
+    assert b.program.floor_count == 2
+    assert Polygon(b.program.floor_program(0).outline).area == pytest.approx(300, rel=0.12)
+
+
+# -- footprints and cores -------------------------------------------------------------------------
+
+
+def test_footprints_differ_across_seeds() -> None:
+    outlines = {
+        json.dumps(generate_building("a two-storey library", seed=s).program.floor_program(0).outline)
+        for s in range(6)
+    }
+    assert len(outlines) >= 4
+
+
+def test_floors_with_different_outlines() -> None:
+    villa = generate_building("a two-storey villa", seed=0)
+    ground, upper = (Polygon(villa.program.floor_program(i).outline) for i in (0, 1))
+    assert ground.area > upper.area and upper.difference(ground).area < 1e-6  # the garage sticks out
+    seen = set()
+    for s in range(12):
+        b = generate_building("a five-storey hotel", seed=s)
+        areas = {round(Polygon(b.program.floor_program(i).outline).area) for i in range(5)}
+        seen.add(len(areas) > 1)
+    assert True in seen  # some hotels stand on a podium
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_cores_in_corners_and_identical_on_every_floor(seed: int) -> None:
+    b = generate_building("a six-storey shopping mall with two elevators", seed=seed)
+    assert sum(c.type == "elevator" for c in b.program.cores) == 2
+    for core in b.program.cores:
+        assert core.floors == list(range(6))
+        cbox = box(core.x[0], core.y[0], core.x[1], core.y[1])
+        for f in b.floors:
+            fp = f.footprint.core(core.id)
+            assert (fp.x, fp.y) == (core.x, core.y)
+            outline = Polygon(f.footprint.polygon)
+            assert cbox.within(outline)
+        # A corner: two sides of the box lie on the exterior walls of the smallest floor.
+        smallest = min((Polygon(f.footprint.polygon) for f in b.floors), key=lambda p: p.area)
+        on_wall = cbox.exterior.intersection(smallest.exterior).length
+        assert on_wall >= min(core.x[1] - core.x[0], core.y[1] - core.y[0]) * 2 - 1e-6
+
+
+# -- load-bearing walls ---------------------------------------------------------------------------
+
+
+def _cells_across(layout, a, b):  # type: ignore[no-untyped-def]
+    """Pairs of label-grid rooms on the two sides of every cell edge along segment a–b."""
+    s = layout.grid.cell_size
+    pairs = []
+    (x0, y0), (x1, y1) = a, b
+    n = int(round(max(abs(x1 - x0), abs(y1 - y0)) / s))
+    for k in range(n):
+        if x0 == x1:
+            y = min(y0, y1) + (k + 0.5) * s
+            pairs.append((layout.grid.room_at(x0 - s / 2, y), layout.grid.room_at(x0 + s / 2, y)))
+        else:
+            x = min(x0, x1) + (k + 0.5) * s
+            pairs.append((layout.grid.room_at(x, y0 - s / 2), layout.grid.room_at(x, y0 + s / 2)))
+    return pairs
+
+
+def test_load_bearing_walls_are_kept_by_the_floor_above() -> None:
+    b = generate_building("a four-storey office", seed=7)
+    assert b.program.load_bearing_walls
+    for k in range(3):
+        below, above = b.floors[k], b.floors[k + 1]
+        walls = first_round_walls(below.layout, below.graph)
+        assert walls and above.footprint.fixed_walls
+        assert not above.relaxations
+        for a, c in above.footprint.fixed_walls:
+            for left, right in _cells_across(above.layout, a, c):
+                # No room of the floor above spans a wall of the floor below.
+                assert left != right, f"floor {k + 1} room {left!r} straddles a wall of floor {k}"
+        # Every carried wall lies on a wall of the floor below.
+        for a, c in above.footprint.fixed_walls:
+            assert all(l != r for l, r in _cells_across(below.layout, a, c))
+
+
+def test_load_bearing_off_for_public_buildings() -> None:
+    b = generate_building("a three-storey library", seed=0)
+    assert not b.program.load_bearing_walls
+    assert all(not f.footprint.fixed_walls for f in b.floors)
+
+
+# -- determinism and the format -------------------------------------------------------------------
+
+
+def test_same_seed_same_building() -> None:
+    a = generate_building("a five-storey apartment block", seed=11)
+    b = generate_building("a five-storey apartment block", seed=11)
+    # Timings differ between runs; everything else must not.
+    strip = lambda x: json.loads(x.model_dump_json(exclude={"floors": {"__all__": {"layout": {"diagnostics"}}}}))  # noqa: E731
+    assert strip(a) == strip(b)
+    c = generate_building("a five-storey apartment block", seed=12)
+    assert strip(a) != strip(c)
+
+
+def test_building_json_round_trips_exactly(tmp_path: Path) -> None:
+    b = generate_building("a three-storey hotel", seed=2)
+    assert any(isinstance(f, FloorCopy) for f in b.program.floors) or b.program.floor_count == 3
+    path = b.to_json(tmp_path / "building.json")
+    back = Building.load(path)
+    assert back == b
+    assert back.model_dump_json(indent=2) + "\n" == path.read_text()
+    data = json.loads(path.read_text())
+    assert data["schema_version"] == "1.0"
+    copies = [f for f in data["program"]["floors"] if "copy" in f]
+    assert all(set(f) == {"index", "copy"} for f in copies)
+
+
+def test_reading_a_newer_major_version_fails(tmp_path: Path) -> None:
+    b = generate_building("a studio", seed=0)
+    data = json.loads(b.model_dump_json())
+    data["schema_version"] = "2.0"
+    (tmp_path / "b.json").write_text(json.dumps(data))
+    with pytest.raises(InvalidInputError, match="schema version 2.0"):
+        Building.load(tmp_path / "b.json")
+
+
+# -- errors ---------------------------------------------------------------------------------------
+
+
+def test_errors_are_typed_and_named() -> None:
+    with pytest.raises(InvalidInputError, match="1 to 10 floors"):
+        generate_building("an office", floors=11)
+    with pytest.raises(InvalidInputError, match="cap of 500"):
+        generate_building("an office", area=800)
+    with pytest.raises(InvalidInputError, match="floor 6"):
+        generate_building("a three-storey school with a gym on the 6th floor")
+    with pytest.raises(PlannerError, match="not available yet"):
+        generate_building("an office", planner="anthropic")
+
+
+def test_a_floor_that_never_solves_is_named(monkeypatch: pytest.MonkeyPatch) -> None:
+    import mansion.building.generate as gen
+
+    calls = []
+
+    def fail(*args: object, **kwargs: object) -> None:
+        calls.append(kwargs["rng_seed"])
+        raise InfeasibleLayoutError("no candidate survived")
+
+    monkeypatch.setattr(gen, "solve_floor", fail)
+    with pytest.raises(InfeasibleLayoutError, match="floor 0 could not be laid out in 4 attempts"):
+        generate_building("a two-storey townhouse", seed=0)
+    assert len(calls) == gen.ATTEMPTS and len(set(calls)) == gen.ATTEMPTS
+
+
+# -- a sample of the hundred ----------------------------------------------------------------------
+
+# Two seeds per building type from the benchmark's 0–99, with 1 to 10 floors among them.
+SAMPLE = sorted({s for t in range(len(TYPES)) for s in (t, t + 56)})
+
+
+@pytest.mark.parametrize("seed", SAMPLE)
+def test_sample_of_the_hundred(seed: int) -> None:
+    kind, floors = case(seed)
+    b = generate_building(description(kind, floors), building_type=kind, floors=floors, seed=seed)
+    assert b.program.floor_count == floors == len(b.floors)
+    check_building(b)
+    for f in b.floors:
+        free = Polygon(f.footprint.polygon, f.footprint.holes).area
+        rooms = sum(r.area for r in f.layout.rooms)
+        # The rooms tile the floor: no overlap, nothing left over.
+        assert rooms == pytest.approx(free, abs=0.01)
+
+
+def test_sample_spans_every_type_and_height() -> None:
+    cases = [case(s) for s in SAMPLE]
+    assert {k for k, _ in cases} == set(TYPES)
+    assert min(f for _, f in cases) == 1 and max(f for _, f in cases) >= 8
