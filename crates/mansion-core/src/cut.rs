@@ -177,9 +177,31 @@ impl<'a> Prepared<'a> {
                 base.cells[c] = parent;
             }
         }
-        let mut labels: Vec<Label> = spec.growers.iter().map(|g| g.label).collect();
-        let mut targets: Vec<f64> = spec.growers.iter().map(|g| g.target).collect();
-        let mut seeds: Vec<Option<[f64; 2]>> = spec.planned.iter().map(|&p| Some(p)).collect();
+        // A label may have several growers (a child growing with its descendants' seeds): it is
+        // one room for the filter and the energy, with the summed target and the area-weighted
+        // mean of the seeds.
+        let mut labels: Vec<Label> = Vec::with_capacity(spec.growers.len() + 1);
+        let mut targets: Vec<f64> = Vec::with_capacity(spec.growers.len() + 1);
+        let mut sums: Vec<[f64; 2]> = Vec::with_capacity(spec.growers.len());
+        for (g, p) in spec.growers.iter().zip(&spec.planned) {
+            let k = match labels.iter().position(|&l| l == g.label) {
+                Some(k) => k,
+                None => {
+                    labels.push(g.label);
+                    targets.push(0.0);
+                    sums.push([0.0; 2]);
+                    labels.len() - 1
+                }
+            };
+            targets[k] += g.target;
+            sums[k][0] += p[0] * g.target;
+            sums[k][1] += p[1] * g.target;
+        }
+        let mut seeds: Vec<Option<[f64; 2]>> = sums
+            .iter()
+            .zip(&targets)
+            .map(|(s, &t)| Some([s[0] / t.max(1e-9), s[1] / t.max(1e-9)]))
+            .collect();
         if let Some((l, t)) = spec.remainder {
             labels.push(l);
             targets.push(t);

@@ -104,6 +104,12 @@ pub struct SeedPlan {
     pub seeds: BTreeMap<String, ChildSeed>,
     #[serde(default)]
     pub parent_seed: Option<[f64; 2]>,
+    /// Optional points for rooms that later rounds cut out of a child (by id). A child whose
+    /// descendants have points grows this round from several seeds at once, its own and theirs,
+    /// each with its own area, so the region takes the shape of the rooms it will hold instead of
+    /// one blob around a single seed.
+    #[serde(default)]
+    pub descendant_seeds: BTreeMap<String, [f64; 2]>,
 }
 
 pub trait SeedPlanner {
@@ -148,6 +154,21 @@ pub fn validate_plan(plan: &SeedPlan, req: &SeedRequest) -> Result<()> {
             "area fractions of the children of '{}' sum to {total:.3} > 1",
             req.parent_id
         ));
+    }
+    for (id, p) in &plan.descendant_seeds {
+        if !req
+            .children
+            .iter()
+            .any(|c| c.descendants.iter().any(|(d, _)| d == id))
+        {
+            return bad(format!(
+                "seed plan has a descendant seed for '{id}', which no child of '{}' will hold",
+                req.parent_id
+            ));
+        }
+        if !(p[0].is_finite() && p[1].is_finite()) {
+            return bad(format!("descendant seed of '{id}' is not finite"));
+        }
     }
     if let Some(p) = plan.parent_seed {
         if !(p[0].is_finite() && p[1].is_finite()) {

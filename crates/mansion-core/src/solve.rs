@@ -675,16 +675,31 @@ pub fn solve_floor(
         let mut growers = Vec::new();
         let mut planned = Vec::new();
         let mut used = 0.0;
-        for &c in children {
+        for (&c, info) in children.iter().zip(&req.children) {
             let seed = &plan.seeds[&floor.names[c as usize]];
             let target = match seed.fraction {
                 Some(f) => f * cells,
                 None => subtree[c as usize] / total * cells,
             };
             used += target;
+            // Descendants with seeds of their own grow under the child's label from those seeds,
+            // each with its share of the child's target; the child keeps the rest.
+            let share = target / subtree[c as usize].max(1e-9);
+            let mut own_target = target;
+            for (d, area) in &info.descendants {
+                if let Some(&p) = plan.descendant_seeds.get(d) {
+                    let t = area * share;
+                    own_target -= t;
+                    growers.push(Grower {
+                        label: c,
+                        target: t.max(1.0),
+                    });
+                    planned.push(req.to_solver(p));
+                }
+            }
             growers.push(Grower {
                 label: c,
-                target: target.max(1.0),
+                target: own_target.max(1.0),
             });
             planned.push(req.to_solver(seed.centre().unwrap_or_default()));
         }

@@ -156,12 +156,18 @@ class ChildSeed(BaseModel):
 
 class SeedPlan(BaseModel):
     """A seed for every child of the round, by child id, and optionally one for the parent (the
-    part of the parent region the parent room itself keeps)."""
+    part of the parent region the parent room itself keeps).
+
+    ``descendant_seeds`` optionally places rooms that later rounds will cut out of a child (ids
+    from :attr:`SeedChild.descendants`): the child's region then grows this round from its own
+    seed and theirs at once, each with its own area, so it takes the shape of the rooms it will
+    hold rather than one blob around a single point."""
 
     model_config = ConfigDict(allow_inf_nan=False)
 
     seeds: dict[str, ChildSeed]
     parent_seed: Point | None = None
+    descendant_seeds: dict[str, Point] = Field(default_factory=dict)
 
     def to_binding_json(self) -> str:
         """The plan as the JSON string the Rust solver expects back from a planner callback."""
@@ -169,6 +175,7 @@ class SeedPlan(BaseModel):
             {
                 "seeds": {cid: seed.to_binding() for cid, seed in self.seeds.items()},
                 "parent_seed": None if self.parent_seed is None else list(self.parent_seed),
+                "descendant_seeds": {k: list(p) for k, p in self.descendant_seeds.items()},
             }
         )
 
@@ -184,39 +191,23 @@ class SeedPlanner(Protocol):
 
 
 class FixedSeedPlanner:
-    """A planner that answers from fixed points, one per room id.
+    """A planner that answers from fixed points, one per room id: where each room's centroid
+    should be.
 
-    Each point is where a room's centroid should be. A child that later rounds will cut into
-    several rooms gets the area-weighted mean of its own point and those of its descendants that
-    have one: the centre of the whole region it must cover, which is where growth should start
-    (the child's own point would pull that region off-centre). With ``subtree_centroids=False``
-    every child gets exactly its own point. The parent gets its own point as its
-    ``parent_seed`` when present. A child without a point is an error (raised as
+    Each child gets its own point; the parent gets its own point as its ``parent_seed`` when
+    present. With ``descendants=True`` (the default) the plan also carries the points of the
+    rooms later rounds will cut out of each child, so the child's region grows from all of them
+    (see :class:`SeedPlan`). A child without a point is an error (raised as
     :class:`PlannerError` by the solver).
     """
 
     def __init__(
-        self, points: Mapping[str, tuple[float, float]], *, subtree_centroids: bool = True
+        self, points: Mapping[str, tuple[float, float]], *, descendants: bool = True
     ) -> None:
         self.points: dict[str, tuple[float, float]] = {
             k: (float(p[0]), float(p[1])) for k, p in points.items()
         }
-        self.subtree_centroids = subtree_centroids
-
-    def _seed(self, child: SeedChild) -> tuple[float, float]:
-        x, y = self.points[child.id]
-        if not self.subtree_centroids or not child.descendants:
-            return (x, y)
-        weighted = [(self.points[child.id], child.own_area)] + [
-            (self.points[d.id], d.area) for d in child.descendants if d.id in self.points
-        ]
-        total = sum(a for _, a in weighted)
-        if total <= 0:
-            return (x, y)
-        return (
-            sum(p[0] * a for p, a in weighted) / total,
-            sum(p[1] * a for p, a in weighted) / total,
-        )
+        self.descendants = descendants
 
     def plan(self, request: SeedRequest) -> SeedPlan:
         missing = [c.id for c in request.children if c.id not in self.points]
@@ -226,13 +217,19 @@ class FixedSeedPlanner:
                 f"FixedSeedPlanner has no point for {names} (round {request.round}, "
                 f"parent {request.parent!r})"
             )
+        later = (
+            {d.id: self.points[d.id] for c in request.children for d in c.descendants if d.id in self.points}
+            if self.descendants
+            else {}
+        )
         return SeedPlan(
-            seeds={c.id: ChildSeed(point=self._seed(c)) for c in request.children},
+            seeds={c.id: ChildSeed(point=self.points[c.id]) for c in request.children},
             parent_seed=self.points.get(request.parent),
+            descendant_seeds=later,
         )
 
     def __repr__(self) -> str:
-        return f"FixedSeedPlanner({self.points!r}, subtree_centroids={self.subtree_centroids})"
+        return f"FixedSeedPlanner({self.points!r}, descendants={self.descendants})"
 
 
 PlanFunction = Callable[[SeedRequest], "SeedPlan | Mapping[str, Any]"]

@@ -75,9 +75,9 @@ class SolverSettings(BaseModel):
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
-    k: float = Field(default=8.0, ge=0.0)
+    k: float = Field(default=4.0, ge=0.0)
     gammas: list[float] = Field(
-        default_factory=lambda: [1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0]
+        default_factory=lambda: [0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0]
     )
     seed_separation: float = Field(default=2.0, ge=0.0)
     fallback_samples: int = Field(default=400, ge=0)
