@@ -8,6 +8,7 @@ lay out is a failure and scores 0, as in the paper.
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 import time
 from collections.abc import Callable, Sequence
@@ -167,8 +168,11 @@ def evaluate_floorplans(
             if progress:
                 progress(len(results), len(jobs))
     else:
-        # Plans are independent; chunks keep the per-task overhead small.
-        with ProcessPoolExecutor(max_workers=n_workers) as pool:
+        # Plans are independent; chunks keep the per-task overhead small. Workers are spawned,
+        # not forked: a fork of a process whose rayon pool already runs has no pool threads, and
+        # its first parallel solve would wait for them forever.
+        context = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(max_workers=n_workers, mp_context=context) as pool:
             for result, _ in pool.map(_score_one, jobs, chunksize=4):
                 results.append(result)
                 if progress:
