@@ -152,14 +152,14 @@ def graph_from_answer(answer: TopologyAnswer, program: BuildingProgram, index: i
     scale = free / total
     nodes = []
     for n in answer.nodes:
-        core = cores.get(n.id)
+        fixed = cores.get(n.id)
         nodes.append(
             RoomNode(
                 id=n.id, type=n.type,
-                area=(core.x[1] - core.x[0]) * (core.y[1] - core.y[0]) if core else n.area * scale,
-                room_type=core.type if core else _room_type(n, program_types),
+                area=(fixed.x[1] - fixed.x[0]) * (fixed.y[1] - fixed.y[0]) if fixed else n.area * scale,
+                room_type=fixed.type if fixed else _room_type(n, program_types),
                 floor_material=n.floor_material or None, wall_material=n.wall_material or None,
-                open_relation="door" if core else "open" if n.type == "main" else n.open_relation,
+                open_relation="door" if fixed else "open" if n.type == "main" else n.open_relation,
             )
         )
     try:

@@ -30,8 +30,8 @@ def _ring_patch(ax: Axes, ring: Ring, holes: Sequence[Ring], **style: object) ->
     verts: list[tuple[float, float]] = []
     codes: list[int] = []
     for r in [ring, *holes]:
-        verts += [tuple(p) for p in r] + [tuple(r[0])]
-        codes += [MplPath.MOVETO] + [MplPath.LINETO] * (len(r) - 1) + [MplPath.CLOSEPOLY]
+        verts += [(float(p[0]), float(p[1])) for p in [*r, r[0]]]
+        codes += [int(MplPath.MOVETO)] + [int(MplPath.LINETO)] * (len(r) - 1) + [int(MplPath.CLOSEPOLY)]
     ax.add_patch(PathPatch(MplPath(verts, codes), **style))
 
 
