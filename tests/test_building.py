@@ -245,14 +245,15 @@ def test_reading_a_newer_major_version_fails(tmp_path: Path) -> None:
 # -- errors ---------------------------------------------------------------------------------------
 
 
-def test_errors_are_typed_and_named() -> None:
+def test_errors_are_typed_and_named(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
     with pytest.raises(InvalidInputError, match="1 to 10 floors"):
         generate_building("an office", floors=11)
     with pytest.raises(InvalidInputError, match="cap of 500"):
         generate_building("an office", area=800)
     with pytest.raises(InvalidInputError, match="floor 6"):
         generate_building("a three-storey school with a gym on the 6th floor")
-    with pytest.raises(PlannerError, match="not available yet"):
+    with pytest.raises(PlannerError, match="set ANTHROPIC_API_KEY"):
         generate_building("an office", planner="anthropic")
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from mansion.cli import app
@@ -44,9 +45,10 @@ def test_generate_options_and_footprint_file(tmp_path: Path) -> None:
     assert all(f.footprint.polygon == [(0, 0), (20, 0), (20, 12), (0, 12)] for f in b.floors)
 
 
-def test_generate_errors_are_one_line_exit_2(tmp_path: Path) -> None:
+def test_generate_errors_are_one_line_exit_2(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
     result = runner.invoke(app, ["generate", "an office", "--floors", "12", "--out", str(tmp_path)])
     assert result.exit_code == 2 and "1 to 10 floors" in result.output
     result = runner.invoke(app, ["generate", "an office", "--planner", "anthropic", "--out", str(tmp_path)])
-    assert result.exit_code == 2 and "not available yet" in result.output
+    assert result.exit_code == 2 and "set ANTHROPIC_API_KEY" in result.output
     assert not (tmp_path / "building.json").exists()

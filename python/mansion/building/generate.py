@@ -9,6 +9,11 @@ their original's graph and layout. The finished building is checked
 A floor whose solve fails is retried with other solver seeds, then with its ``adjacent`` edges
 dropped, then (only for carried walls) without the carried walls; each relaxation is recorded on
 the floor. When every attempt fails, :class:`InfeasibleLayoutError` names the floor.
+
+The offline planner answers in milliseconds, so its floors are solved here one after another.
+Any other planner (Claude) runs through the LangGraph pipeline of
+:mod:`mansion.agents.building_graph`, which uses the same steps (:func:`solve_building_floor`,
+:func:`copy_floor`, :func:`finish_building`) with the floors fanned out.
 """
 
 from __future__ import annotations
@@ -31,10 +36,18 @@ from mansion.building.load_bearing import (
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError
 from mansion.floorplan import SeedPlanner, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
-from mansion.models.building import Building, Floor, FloorCopy, RoomCard
-from mansion.planning.planner import BuildingPlanner, Constraints, get_planner
+from mansion.models.building import Building, BuildingProgram, Floor, FloorCopy, Palette, RoomCard
+from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner, get_planner
 
-__all__ = ["ATTEMPTS", "generate_building"]
+__all__ = [
+    "ATTEMPTS",
+    "copy_floor",
+    "derived_seed",
+    "finish_building",
+    "floor_footprint",
+    "generate_building",
+    "solve_building_floor",
+]
 
 #: Solver attempts per floor: two plain seeds, then without adjacent edges, then without walls.
 ATTEMPTS = 4
@@ -151,56 +164,102 @@ def generate_building(
         floors=floors, area=area, outline=_footprint_outline(footprint),
         max_floor_area=max_floor_area, building_type=building_type, load_bearing=load_bearing,
     )
+    solver = {"cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact}
+    if not isinstance(plan, OfflinePlanner):
+        # LLM planners wait on the network: the LangGraph pipeline fans the floors out. It is
+        # imported only here so the offline path never loads langgraph.
+        from mansion.agents.building_graph import run_building_graph
+
+        return run_building_graph(
+            plan, description, constraints, seed=seed, solver=solver, progress=progress
+        )
     rng = random.Random(derived_seed(seed, "program"))
     program, palette = plan.plan_program(description, constraints, rng)
     total = program.floor_count
-    solver = {"cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact}
     done: list[Floor] = []
     for index in range(total):
         entry = program.floors[index]
         if progress:
             progress(f"floor {index}", index, total)
         if isinstance(entry, FloorCopy):
-            source = done[entry.copy_of]
-            done.append(source.model_copy(update={"index": index, "copy_of": entry.copy_of}))
+            done.append(copy_floor(done[entry.copy_of], index))
             continue
         graph = plan.plan_topology(program, index)
-        floor_program = program.floor_program(index)
-        fp = Footprint(
-            polygon=floor_program.outline, holes=floor_program.holes,
-            cores=[Core(id=c.id, type=c.type, x=c.x, y=c.y) for c in program.cores if index in c.floors],
-        )
-        seed_planner: SeedPlanner | None = None
-        if program.load_bearing_walls and index > 0 and done[index - 1].carried_walls:
-            below = done[index - 1]
-            walls = carry_walls(below.carried_walls, fp)
-            if walls:
-                fp = fp.model_copy(update={"fixed_walls": walls})
-                regions = first_round_regions(below.layout, below.graph)
-                ours = {g for g in first_round_groups(graph).values()}
-                # Same first round as below: match its areas and seed it in the same places.
-                if ours == set(regions):
-                    graph = retarget_first_round(graph, {k: a for k, (a, _) in regions.items()})
-                    seed_planner = SkeletonSeedPlanner(
-                        graph.hub.id, {k: p for k, (_, p) in regions.items()}
-                    )
-        layout, graph, fp, rng_seed, attempts, relax = _solve(
-            index, graph, fp, seed_planner, seed, solver
-        )
-        notes = {r.id: r.notes for r in floor_program.rooms}
-        done.append(
-            Floor(
-                index=index, graph=graph, footprint=fp, layout=layout,
-                room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
-                relaxations=relax,
-                carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
-            )
-        )
+        below = done[index - 1] if index > 0 else None
+        done.append(solve_building_floor(program, index, graph, below, seed, solver))
     if progress:
         progress("checks", total, total)
+    return finish_building(description, seed, plan.name, program, palette, done, min_contact)
+
+
+def copy_floor(source: Floor, index: int) -> Floor:
+    """Floor ``index`` as the paper's copy of ``source``: the same graph and layout."""
+    return source.model_copy(update={"index": index, "copy_of": source.index})
+
+
+def floor_footprint(program: BuildingProgram, index: int) -> Footprint:
+    """Floor ``index``'s outline, courtyards and the cores that serve it."""
+    floor_program = program.floor_program(index)
+    return Footprint(
+        polygon=floor_program.outline, holes=floor_program.holes,
+        cores=[Core(id=c.id, type=c.type, x=c.x, y=c.y) for c in program.cores if index in c.floors],
+    )
+
+
+def solve_building_floor(
+    program: BuildingProgram,
+    index: int,
+    graph: RoomGraph,
+    below: Floor | None,
+    seed: int,
+    solver: dict[str, Any],
+    seed_planner: SeedPlanner | None = None,
+) -> Floor:
+    """SolveFloorLayout for floor ``index`` (not a copy) of ``program``.
+
+    ``below`` is the solved floor underneath (None on the ground floor): its load-bearing walls
+    become fixed walls here when the program keeps them. ``seed_planner`` is the cutting node's
+    planner (None: the solver's offline heuristic); on a floor whose first round must follow the
+    walls below, the first round is seeded from the floor below and the other rounds go to it.
+    """
+    floor_program = program.floor_program(index)
+    fp = floor_footprint(program, index)
+    planner = seed_planner
+    if program.load_bearing_walls and below is not None and below.carried_walls:
+        walls = carry_walls(below.carried_walls, fp)
+        if walls:
+            fp = fp.model_copy(update={"fixed_walls": walls})
+            regions = first_round_regions(below.layout, below.graph)
+            ours = {g for g in first_round_groups(graph).values()}
+            # Same first round as below: match its areas and seed it in the same places.
+            if ours == set(regions):
+                graph = retarget_first_round(graph, {k: a for k, (a, _) in regions.items()})
+                planner = SkeletonSeedPlanner(
+                    graph.hub.id, {k: p for k, (_, p) in regions.items()}, rest=seed_planner
+                )
+    layout, graph, fp, rng_seed, attempts, relax = _solve(index, graph, fp, planner, seed, solver)
+    notes = {r.id: r.notes for r in floor_program.rooms}
+    return Floor(
+        index=index, graph=graph, footprint=fp, layout=layout,
+        room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
+        relaxations=relax,
+        carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
+    )
+
+
+def finish_building(
+    description: str,
+    seed: int,
+    planner: str,
+    program: BuildingProgram,
+    palette: Palette,
+    floors: list[Floor],
+    min_contact: float,
+) -> Building:
+    """The building, after every check (:class:`InvalidBuildingError` on a failure)."""
     building = Building(
-        description=description, seed=seed, planner=plan.name, program=program, palette=palette,
-        floors=done,
+        description=description, seed=seed, planner=planner, program=program, palette=palette,
+        floors=floors,
     )
     check_building(building, min_contact=min_contact)
     return building

@@ -21,7 +21,7 @@ import numpy as np
 from shapely.geometry import LineString, MultiLineString, Polygon, box
 from shapely.ops import linemerge, polylabel, unary_union
 
-from mansion.floorplan.seeds import ChildSeed, SeedPlan, SeedRequest
+from mansion.floorplan.seeds import ChildSeed, SeedPlan, SeedPlanner, SeedRequest
 from mansion.models import FloorLayout, Footprint, RoomGraph
 from mansion.models.footprint import Point
 
@@ -161,14 +161,18 @@ def retarget_first_round(graph: RoomGraph, areas: dict[str, float]) -> RoomGraph
 
 
 class SkeletonSeedPlanner:
-    """Seeds the first round at the regions of the floor below; every other round spreads its
-    children over the parent region (farthest-point sampling, larger rooms first)."""
+    """Seeds the first round at the regions of the floor below; every other round goes to
+    ``rest`` when given (an LLM seed planner), else spreads its children over the parent region
+    (farthest-point sampling, larger rooms first)."""
 
-    def __init__(self, hub: str, points: dict[str, Point]) -> None:
+    def __init__(self, hub: str, points: dict[str, Point], rest: SeedPlanner | None = None) -> None:
         self.hub = hub
         self.points = points
+        self.rest = rest
 
     def plan(self, request: SeedRequest) -> SeedPlan:
+        if self.rest is not None and request.parent != self.hub:
+            return self.rest.plan(request)
         seeds: dict[str, ChildSeed] = {}
         pending = []
         for child in request.children:

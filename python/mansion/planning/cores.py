@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import random
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from shapely.geometry import Polygon, box
 from shapely.geometry.base import BaseGeometry
@@ -22,7 +22,7 @@ from mansion.exceptions import PlannerError
 from mansion.models.building import BuildingCore
 from mansion.planning.footprints import Outline
 
-__all__ = ["CoreRequest", "place_cores"]
+__all__ = ["CoreRequest", "core_problem", "place_cores"]
 
 CoreRequest = tuple[str, str, tuple[int, int]]  # (id, type, (width, depth)) in whole metres
 
@@ -67,36 +67,90 @@ def _fits(candidate: Polygon, floors: list[Polygon], placed: list[Polygon]) -> b
     return True
 
 
+def _served(outlines: Sequence[Outline], floors_served: Sequence[int]) -> tuple[list[Polygon], int]:
+    served = [Polygon(outlines[f][0], outlines[f][1]) for f in floors_served]
+    smallest = min(floors_served, key=lambda f: Polygon(outlines[f][0], outlines[f][1]).area)
+    return served, smallest
+
+
+def _core_box(core: BuildingCore) -> Polygon:
+    return box(core.x[0], core.y[0], core.x[1], core.y[1])
+
+
+def core_problem(
+    core: BuildingCore,
+    size: tuple[int, int],
+    outlines: Sequence[Outline],
+    placed: Sequence[BuildingCore] = (),
+) -> str | None:
+    """Why ``core`` (proposed by someone else, e.g. an LLM) cannot stand where it is, or None.
+
+    The same rules :func:`place_cores` follows: whole-metre coordinates, the size asked for (either
+    way round), a corner of the smallest served outline bounded by two exterior walls, inside every
+    floor it serves, clear of the ``placed`` cores, and leaving each free region one piece with no
+    sliver narrower than 2 m.
+    """
+    where = f"{core.type} core {core.id!r} at x={list(core.x)}, y={list(core.y)}"
+    if any(t != round(t) for t in (*core.x, *core.y)):
+        return f"{where}: coordinates must be whole metres"
+    w, d = core.x[1] - core.x[0], core.y[1] - core.y[0]
+    if {round(w), round(d)} != set(size) or w * d != size[0] * size[1]:
+        return f"{where}: the box is {w:g} x {d:g} m, it must be {size[0]} x {size[1]} m"
+    served, smallest = _served(outlines, core.floors)
+    candidate = _core_box(core)
+    corners = {
+        _box_at(p, u, v, a, b).bounds
+        for p, u, v in _convex_corners(outlines[smallest][0])
+        for a, b in (size, size[::-1])
+    }
+    if candidate.bounds not in corners:
+        return f"{where}: not in a corner of floor {smallest}'s outline bounded by two exterior walls"
+    if not _fits(candidate, served, [_core_box(c) for c in placed]):
+        return (
+            f"{where}: outside a floor it serves, overlapping another core, or cutting the free "
+            "area into pieces or slivers narrower than 2 m"
+        )
+    return None
+
+
 def place_cores(
     outlines: Sequence[Outline],
     requests: Sequence[CoreRequest],
     floors_served: Sequence[int],
     rng: random.Random,
+    *,
+    placed_cores: Sequence[BuildingCore] = (),
+    near: Mapping[str, tuple[float, float]] | None = None,
 ) -> list[BuildingCore]:
     """Place each requested core (in order) so that it serves ``floors_served``.
 
     Stairs after the first go to the corner farthest from the cores placed so far (escape routes
-    apart); elevators to the nearest free corner (a lift beside the main stair). Raises
+    apart); elevators to the nearest free corner (a lift beside the main stair). A core with a
+    point in ``near`` goes to the fitting position closest to it instead (where an LLM wanted it).
+    ``placed_cores`` are already standing and must be kept clear of. Raises
     :class:`PlannerError` naming the core when no position fits.
     """
-    served = [Polygon(outlines[f][0], outlines[f][1]) for f in floors_served]
-    smallest = min(floors_served, key=lambda f: Polygon(outlines[f][0], outlines[f][1]).area)
+    served, smallest = _served(outlines, floors_served)
     corners = _convex_corners(outlines[smallest][0])
     rng.shuffle(corners)
-    placed: list[Polygon] = []
+    placed: list[Polygon] = [_core_box(c) for c in placed_cores]
     cores: list[BuildingCore] = []
     for cid, kind, (w, d) in requests:
         options = []
         for p, u, v in corners:
             for a, b in ((w, d), (d, w)):
                 options.append(_box_at(p, u, v, a, b))
-        if placed:
+        if near is not None and cid in near:
+            target = near[cid]
+            options.sort(key=lambda g: math.dist((g.centroid.x, g.centroid.y), target))
+        elif placed:
             centre = [(g.centroid.x, g.centroid.y) for g in placed]
 
             def dist(g: Polygon) -> float:
                 return min(math.dist((g.centroid.x, g.centroid.y), c) for c in centre)
 
             options.sort(key=dist, reverse=(kind == "stair"))
+        if placed:
             # Beside a placed core along an exterior wall, for when the corners are used up.
             for g in placed:
                 x0, y0, x1, y1 = (int(t) for t in g.bounds)

@@ -2,8 +2,9 @@
 
 A :class:`BuildingPlanner` answers the paper's two planning questions: the whole-building program
 (``plan_program``) and one floor's topology (``plan_topology``). The offline planner answers from
-rules of thumb and the seed; an LLM planner (Claude with the paper's prompt templates) will answer
-the same two calls, so the pipeline in :mod:`mansion.building` does not change when it arrives.
+rules of thumb and the seed; an LLM planner (Claude with the paper's prompt templates) answers
+the same two calls (:class:`mansion.planning.llm.AnthropicBuildingPlanner`), so the pipeline in
+:mod:`mansion.building` does not change with the planner.
 """
 
 from __future__ import annotations
@@ -20,9 +21,17 @@ from mansion.planning.footprints import Outline
 from mansion.planning.palette import choose_palette
 from mansion.planning.program import ProgramOptions, plan_program, typology
 from mansion.planning.topology import floor_graph
-from mansion.planning.typologies import TYPOLOGIES
+from mansion.planning.typologies import TYPOLOGIES, Typology
 
-__all__ = ["BuildingPlanner", "Constraints", "OfflinePlanner", "PLANNERS", "get_planner"]
+__all__ = [
+    "Brief",
+    "BuildingPlanner",
+    "Constraints",
+    "OfflinePlanner",
+    "PLANNERS",
+    "get_planner",
+    "read_brief",
+]
 
 #: Used when the description names no known building type.
 DEFAULT_BUILDING_TYPE = "office"
@@ -38,6 +47,31 @@ class Constraints:
     max_floor_area: float = 500.0
     building_type: str | None = None
     load_bearing: bool | None = None
+
+
+@dataclass(frozen=True)
+class Brief:
+    """What every planner starts from: the parsed description, the building type (key and rules
+    of thumb), the chief designer's palette and the caller's constraints as program options."""
+
+    request: Request
+    key: str
+    typology: Typology
+    palette: Palette
+    options: ProgramOptions
+
+
+def read_brief(description: str, constraints: Constraints, rng: random.Random) -> Brief:
+    """Parse the description, settle the building type and choose the palette (from ``rng``)."""
+    request = parse_description(description)
+    key = constraints.building_type or request.building_type or DEFAULT_BUILDING_TYPE
+    typ = typology(key)
+    palette = choose_palette(typ.family, rng)
+    options = ProgramOptions(
+        floors=constraints.floors, area=constraints.area, outline=constraints.outline,
+        max_floor_area=constraints.max_floor_area, load_bearing=constraints.load_bearing,
+    )
+    return Brief(request, key, typ, palette, options)
 
 
 @runtime_checkable
@@ -65,15 +99,8 @@ class OfflinePlanner:
     def plan_program(
         self, description: str, constraints: Constraints, rng: random.Random
     ) -> tuple[BuildingProgram, Palette]:
-        request: Request = parse_description(description)
-        key = constraints.building_type or request.building_type or DEFAULT_BUILDING_TYPE
-        typ = typology(key)
-        palette = choose_palette(typ.family, rng)
-        options = ProgramOptions(
-            floors=constraints.floors, area=constraints.area, outline=constraints.outline,
-            max_floor_area=constraints.max_floor_area, load_bearing=constraints.load_bearing,
-        )
-        return plan_program(request, key, options, palette, rng), palette
+        brief = read_brief(description, constraints, rng)
+        return plan_program(brief.request, brief.key, brief.options, brief.palette, rng), brief.palette
 
     def plan_topology(self, program: BuildingProgram, index: int) -> RoomGraph:
         floor = program.floors[index]
@@ -88,10 +115,10 @@ class OfflinePlanner:
 
 
 def _anthropic() -> BuildingPlanner:
-    raise PlannerError(
-        "the 'anthropic' planner is not available yet in this version of mansion; "
-        "use --planner offline (the LLM planners of issue 4 will plug into the same interface)"
-    )
+    # Imported here: the offline path never pays for the LLM modules.
+    from mansion.planning.llm import AnthropicBuildingPlanner
+
+    return AnthropicBuildingPlanner()
 
 
 #: Planner factories by name, as ``--planner`` offers them.

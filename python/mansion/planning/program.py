@@ -37,7 +37,11 @@ __all__ = [
     "MAX_FLOORS",
     "ProgramOptions",
     "plan_program",
+    "connectivity",
+    "core_requests",
+    "min_arm",
     "resolve_constraints",
+    "sample_outlines",
     "typology",
 ]
 
@@ -114,7 +118,7 @@ def resolve_constraints(
     return floors, min(area, options.max_floor_area) if options.outline is None else area
 
 
-def _connectivity(
+def connectivity(
     request: Request, typ: Typology, floors: int
 ) -> tuple[ConnectivityMethod | None, int, int]:
     """(method, stairs, elevators) from the building type, its height and the description."""
@@ -139,7 +143,7 @@ def _connectivity(
     return method, stairs, elevators
 
 
-def _core_requests(typ: Typology, stairs: int, elevators: int) -> list[CoreRequest]:
+def core_requests(typ: Typology, stairs: int, elevators: int) -> list[CoreRequest]:
     small = typ.family == "residential" and typ.key != "apartment_block"
     stair = (3, 4) if small else (3, 6)
     lift = (2, 2) if small else (3, 3)
@@ -384,6 +388,32 @@ def _bay_floor(
     return plan.floor_hub[role], hub_area, rooms, zones
 
 
+def sample_outlines(
+    typ: Typology,
+    floors: int,
+    area: float,
+    options: ProgramOptions,
+    rng: random.Random,
+    *,
+    attempt: int = 0,
+    min_arm: float,
+) -> list[Outline]:
+    """Every floor's outline: the caller's, else a shape and stack the type uses, sized to
+    ``area`` (a small floor's first attempt is a plain rectangle)."""
+    if options.outline is not None:
+        return [options.outline] * floors
+    shape = rng.choice(typ.shapes) if area >= 120 or attempt else "rectangle"
+    if shape == "courtyard" and area < 350:
+        shape = "rectangle"
+    stack = rng.choice(typ.stacks) if floors > 1 else "uniform"
+    return stack_outlines(shape, stack, floors, area, rng, min_arm=min_arm)
+
+
+def min_arm(typ: Typology, building_type: str) -> float:
+    """The narrowest wing an outline of this type may have, in metres."""
+    return 4.0 if typ.family == "residential" and building_type not in BAY_TYPOLOGIES else 8.0
+
+
 def plan_program(
     request: Request,
     building_type: str,
@@ -395,21 +425,14 @@ def plan_program(
     typ = typology(building_type)
     bay_plan = BAY_TYPOLOGIES[building_type][1] if building_type in BAY_TYPOLOGIES else None
     floors, area = resolve_constraints(request, typ, options, rng)
-    min_arm = 4.0 if typ.family == "residential" and bay_plan is None else 8.0
+    arm = min_arm(typ, building_type)
 
-    method, n_stairs, n_elevators = _connectivity(request, typ, floors)
-    requests = _core_requests(typ, n_stairs, n_elevators)
+    method, n_stairs, n_elevators = connectivity(request, typ, floors)
+    requests = core_requests(typ, n_stairs, n_elevators)
     cores: list[BuildingCore] = []
     outlines: list[Outline] = []
     for attempt in range(12):
-        if options.outline is not None:
-            outlines = [options.outline] * floors
-        else:
-            shape = rng.choice(typ.shapes) if area >= 120 or attempt else "rectangle"
-            if shape == "courtyard" and area < 350:
-                shape = "rectangle"
-            stack = rng.choice(typ.stacks) if floors > 1 else "uniform"
-            outlines = stack_outlines(shape, stack, floors, area, rng, min_arm=min_arm)
+        outlines = sample_outlines(typ, floors, area, options, rng, attempt=attempt, min_arm=arm)
         try:
             cores = place_cores(outlines, requests, list(range(floors)), rng) if requests else []
             break
