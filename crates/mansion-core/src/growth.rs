@@ -395,6 +395,7 @@ pub fn grow_in<'s, R: Rng>(
     active.clear();
     active.extend((0..n).filter(|&k| (area[k] as f64) < growers[k].target));
     s.runs.f.resize(free.wr.max(free.wc), 0);
+    s.runs.zeros.resize(free.wr.max(free.wc), 0);
     while !active.is_empty() {
         let pos = pick_weighted(rng, growers, active);
         let k = active[pos];
@@ -466,6 +467,8 @@ struct Run {
 #[derive(Default)]
 struct RunScratch {
     f: Vec<u64>,
+    /// As many zero words as `f` has.
+    zeros: Vec<u64>,
     best: Vec<Run>,
 }
 
@@ -502,9 +505,6 @@ fn best_run<R: Rng>(
     // One line of candidate cells: without walls its maximal runs are the runs; with walls each
     // cell is vetted and runs split where a wall crosses the line.
     let mut line = |f: &[u64], sep: Option<&[u64]>, cell: &dyn Fn(usize) -> usize, horizontal| {
-        if f.iter().all(|&x| x == 0) {
-            return;
-        }
         if wb.is_none() {
             for_each_run(f, |p, len| {
                 let run = Run {
@@ -528,24 +528,24 @@ fn best_run<R: Rng>(
             );
         }
     };
+    // Most lines hold no candidate cell (inside the room, or against other rooms): they are
+    // skipped after a few word operations, the walls' words reading as zero when there are none.
+    let no_walls = &s.zeros[..free.wr.max(free.wc)];
     // rows beyond the bottom and top of the room's cells: runs along x, split by vertical walls
     for y in y0..=y1 {
         for up in [false, true] {
             let ty = if up { y + 1 } else { y - 1 };
             let (rr, fr) = (room.row(y), free.row(ty));
+            // the edge between the room cell and the new cell must be open
+            let shut = wb.map_or(no_walls, |b| b.h.row(if up { ty } else { y }));
+            let mut any = 0;
             for i in 0..free.wr {
-                s.f[i] = rr[i] & fr[i];
-                if let Some(b) = wb {
-                    // the edge between the room cell and the new cell must be open
-                    s.f[i] &= !b.h.row(if up { ty } else { y })[i];
-                }
+                s.f[i] = rr[i] & fr[i] & !shut[i];
+                any |= s.f[i];
             }
-            line(
-                &s.f[..free.wr],
-                wb.map(|b| b.v.row(ty)),
-                &|x| ty * w + x,
-                true,
-            );
+            if any != 0 {
+                line(&s.f[..free.wr], wb.map(|b| b.v.row(ty)), &|x| ty * w + x, true);
+            }
         }
     }
     // columns beyond the left and right of the room's cells: runs along y, split by horizontal walls
@@ -553,18 +553,15 @@ fn best_run<R: Rng>(
         for right in [false, true] {
             let tx = if right { x + 1 } else { x - 1 };
             let (rc, fc) = (room.col(x), free.col(tx));
+            let shut = wb.map_or(no_walls, |b| b.v.col(if right { tx } else { x }));
+            let mut any = 0;
             for i in 0..free.wc {
-                s.f[i] = rc[i] & fc[i];
-                if let Some(b) = wb {
-                    s.f[i] &= !b.v.col(if right { tx } else { x })[i];
-                }
+                s.f[i] = rc[i] & fc[i] & !shut[i];
+                any |= s.f[i];
             }
-            line(
-                &s.f[..free.wc],
-                wb.map(|b| b.h.col(tx)),
-                &|y| y * w + tx,
-                false,
-            );
+            if any != 0 {
+                line(&s.f[..free.wc], wb.map(|b| b.h.col(tx)), &|y| y * w + tx, false);
+            }
         }
     }
     if s.best.is_empty() {
