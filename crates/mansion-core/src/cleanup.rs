@@ -20,6 +20,10 @@ pub struct Scratch {
     pub list: Vec<usize>,
     pub next: Vec<usize>,
     pub counts: Vec<(Label, u32)>,
+    /// Runs of one label along a row: (first x, last x, id), for piece counting.
+    pub runs: Vec<(u32, u32, u32)>,
+    /// Union–find parents of those runs.
+    pub parent: Vec<u32>,
 }
 
 impl Scratch {

@@ -544,7 +544,12 @@ fn best_run<R: Rng>(
                 any |= s.f[i];
             }
             if any != 0 {
-                line(&s.f[..free.wr], wb.map(|b| b.v.row(ty)), &|x| ty * w + x, true);
+                line(
+                    &s.f[..free.wr],
+                    wb.map(|b| b.v.row(ty)),
+                    &|x| ty * w + x,
+                    true,
+                );
             }
         }
     }
@@ -560,7 +565,12 @@ fn best_run<R: Rng>(
                 any |= s.f[i];
             }
             if any != 0 {
-                line(&s.f[..free.wc], wb.map(|b| b.h.col(tx)), &|y| y * w + tx, false);
+                line(
+                    &s.f[..free.wc],
+                    wb.map(|b| b.h.col(tx)),
+                    &|y| y * w + tx,
+                    false,
+                );
             }
         }
     }
