@@ -469,7 +469,34 @@ struct RunScratch {
     f: Vec<u64>,
     /// As many zero words as `f` has.
     zeros: Vec<u64>,
+    /// Lines worth reading: (line, whether the free cells lie after it).
+    lines: Vec<(usize, bool)>,
     best: Vec<Run>,
+}
+
+/// The lines `at` in `a..=b` (of `words` words each in `room` and `free`) where some room cell
+/// has a free cell on the line before (`(at, false)`) or after (`(at, true)`), in that order.
+fn touching(
+    room: &[u64],
+    free: &[u64],
+    words: usize,
+    a: usize,
+    b: usize,
+    out: &mut Vec<(usize, bool)>,
+) {
+    out.clear();
+    let rooms = room[a * words..(b + 1) * words].chunks_exact(words);
+    let before = free[(a - 1) * words..b * words].chunks_exact(words);
+    let after = free[(a + 1) * words..(b + 2) * words].chunks_exact(words);
+    for (k, ((r, lo), hi)) in rooms.zip(before).zip(after).enumerate() {
+        let meets = |f: &[u64]| r.iter().zip(f).any(|(x, y)| x & y != 0);
+        if meets(lo) {
+            out.push((a + k, false));
+        }
+        if meets(hi) {
+            out.push((a + k, true));
+        }
+    }
 }
 
 /// Keep `run` if it is at least as long as the best so far (runs of one cell only make spurs).
@@ -528,50 +555,49 @@ fn best_run<R: Rng>(
             );
         }
     };
-    // Most lines hold no candidate cell (inside the room, or against other rooms): they are
-    // skipped after a few word operations, the walls' words reading as zero when there are none.
+    // Few lines hold a candidate cell (most lie inside the room or against other rooms), so the
+    // lines are first screened as whole words, then only those few are read cell by cell; the
+    // walls' words read as zero when there are none.
     let no_walls = &s.zeros[..free.wr.max(free.wc)];
     // rows beyond the bottom and top of the room's cells: runs along x, split by vertical walls
-    for y in y0..=y1 {
-        for up in [false, true] {
-            let ty = if up { y + 1 } else { y - 1 };
-            let (rr, fr) = (room.row(y), free.row(ty));
-            // the edge between the room cell and the new cell must be open
-            let shut = wb.map_or(no_walls, |b| b.h.row(if up { ty } else { y }));
-            let mut any = 0;
-            for i in 0..free.wr {
-                s.f[i] = rr[i] & fr[i] & !shut[i];
-                any |= s.f[i];
-            }
-            if any != 0 {
-                line(
-                    &s.f[..free.wr],
-                    wb.map(|b| b.v.row(ty)),
-                    &|x| ty * w + x,
-                    true,
-                );
-            }
+    touching(&room.rows, &free.rows, free.wr, y0, y1, &mut s.lines);
+    for &(y, up) in &s.lines {
+        let ty = if up { y + 1 } else { y - 1 };
+        let (rr, fr) = (room.row(y), free.row(ty));
+        // the edge between the room cell and the new cell must be open
+        let shut = wb.map_or(no_walls, |b| b.h.row(if up { ty } else { y }));
+        let mut any = 0;
+        for i in 0..free.wr {
+            s.f[i] = rr[i] & fr[i] & !shut[i];
+            any |= s.f[i];
+        }
+        if any != 0 {
+            line(
+                &s.f[..free.wr],
+                wb.map(|b| b.v.row(ty)),
+                &|x| ty * w + x,
+                true,
+            );
         }
     }
     // columns beyond the left and right of the room's cells: runs along y, split by horizontal walls
-    for x in x0..=x1 {
-        for right in [false, true] {
-            let tx = if right { x + 1 } else { x - 1 };
-            let (rc, fc) = (room.col(x), free.col(tx));
-            let shut = wb.map_or(no_walls, |b| b.v.col(if right { tx } else { x }));
-            let mut any = 0;
-            for i in 0..free.wc {
-                s.f[i] = rc[i] & fc[i] & !shut[i];
-                any |= s.f[i];
-            }
-            if any != 0 {
-                line(
-                    &s.f[..free.wc],
-                    wb.map(|b| b.h.col(tx)),
-                    &|y| y * w + tx,
-                    false,
-                );
-            }
+    touching(&room.cols, &free.cols, free.wc, x0, x1, &mut s.lines);
+    for &(x, right) in &s.lines {
+        let tx = if right { x + 1 } else { x - 1 };
+        let (rc, fc) = (room.col(x), free.col(tx));
+        let shut = wb.map_or(no_walls, |b| b.v.col(if right { tx } else { x }));
+        let mut any = 0;
+        for i in 0..free.wc {
+            s.f[i] = rc[i] & fc[i] & !shut[i];
+            any |= s.f[i];
+        }
+        if any != 0 {
+            line(
+                &s.f[..free.wc],
+                wb.map(|b| b.h.col(tx)),
+                &|y| y * w + tx,
+                false,
+            );
         }
     }
     if s.best.is_empty() {
