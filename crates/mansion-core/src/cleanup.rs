@@ -24,6 +24,8 @@ pub struct Scratch {
     pub runs: Vec<(u32, u32, u32)>,
     /// Union–find parents of those runs.
     pub parent: Vec<u32>,
+    /// Empty cells to fill.
+    pub holes: Vec<usize>,
 }
 
 impl Scratch {
@@ -160,9 +162,11 @@ pub fn fill_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scrat
     let w = grid.w;
     let epoch = s.bump();
     let mut all_filled = true;
-    for &start in &region.cells {
-        let start = start as usize;
-        if grid.cells[start] != EMPTY || s.stamp[start] == epoch {
+    let mut holes = std::mem::take(&mut s.holes);
+    find_empty(grid, region, &mut holes);
+    for &start in &holes {
+        // cells of a component already filled (or found unfillable) carry this epoch's stamp
+        if s.stamp[start] == epoch {
             continue;
         }
         s.queue.clear();
@@ -205,7 +209,29 @@ pub fn fill_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scrat
             None => all_filled = false,
         }
     }
+    s.holes = holes;
     all_filled
+}
+
+/// The region's `EMPTY` cells, ascending, into `out`; rows are read sixteen cells at a time
+/// since most hold none.
+fn find_empty(grid: &Grid, region: &Region, out: &mut Vec<usize>) {
+    const CHUNK: usize = 16;
+    out.clear();
+    let (x0, y0, x1, y1) = region.bbox;
+    for y in y0..=y1 {
+        let first = y * grid.w + x0;
+        let row = &grid.cells[first..=y * grid.w + x1];
+        for (k, chunk) in row.chunks(CHUNK).enumerate() {
+            if chunk.iter().fold(false, |any, &c| any | (c == EMPTY)) {
+                out.extend(
+                    (0..chunk.len())
+                        .map(|j| first + k * CHUNK + j)
+                        .filter(|&i| grid.cells[i] == EMPTY && region.inside[i]),
+                );
+            }
+        }
+    }
 }
 
 /// Leftover cells of a round go to the parent, which keeps only its largest connected piece; the

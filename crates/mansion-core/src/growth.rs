@@ -485,17 +485,51 @@ fn touching(
     out: &mut Vec<(usize, bool)>,
 ) {
     out.clear();
-    let rooms = room[a * words..(b + 1) * words].chunks_exact(words);
-    let before = free[(a - 1) * words..b * words].chunks_exact(words);
-    let after = free[(a + 1) * words..(b + 2) * words].chunks_exact(words);
-    for (k, ((r, lo), hi)) in rooms.zip(before).zip(after).enumerate() {
-        let meets = |f: &[u64]| r.iter().zip(f).any(|(x, y)| x & y != 0);
-        if meets(lo) {
-            out.push((a + k, false));
+    let rooms = &room[a * words..(b + 1) * words];
+    let below = &free[(a - 1) * words..b * words];
+    let above = &free[(a + 1) * words..(b + 2) * words];
+    // lines of one or two words (grids up to 128 cells across) get a fully unrolled loop
+    match words {
+        1 => touching_n::<1>(rooms, below, above, a, out),
+        2 => touching_n::<2>(rooms, below, above, a, out),
+        _ => {
+            let lines = rooms.chunks_exact(words);
+            let (lo, hi) = (below.chunks_exact(words), above.chunks_exact(words));
+            for (k, ((r, lo), hi)) in lines.zip(lo).zip(hi).enumerate() {
+                let meets = |f: &[u64]| r.iter().zip(f).any(|(x, y)| x & y != 0);
+                touch(out, a + k, meets(lo), meets(hi));
+            }
         }
-        if meets(hi) {
-            out.push((a + k, true));
+    }
+}
+
+#[inline]
+fn touching_n<const N: usize>(
+    rooms: &[u64],
+    below: &[u64],
+    above: &[u64],
+    a: usize,
+    out: &mut Vec<(usize, bool)>,
+) {
+    let lines = rooms.chunks_exact(N);
+    let (lo, hi) = (below.chunks_exact(N), above.chunks_exact(N));
+    for (k, ((r, lo), hi)) in lines.zip(lo).zip(hi).enumerate() {
+        let (mut m_lo, mut m_hi) = (0, 0);
+        for i in 0..N {
+            m_lo |= r[i] & lo[i];
+            m_hi |= r[i] & hi[i];
         }
+        touch(out, a + k, m_lo != 0, m_hi != 0);
+    }
+}
+
+#[inline]
+fn touch(out: &mut Vec<(usize, bool)>, at: usize, before: bool, after: bool) {
+    if before {
+        out.push((at, false));
+    }
+    if after {
+        out.push((at, true));
     }
 }
 
@@ -793,6 +827,33 @@ mod tests {
             let mut got = Vec::new();
             for_each_run(&f, |s, l| got.push((s, l)));
             assert_eq!(got, want, "{f:x?}");
+        }
+    }
+
+    #[test]
+    fn touching_lines_match_a_cell_by_cell_test() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(7);
+        let mut got = Vec::new();
+        for words in 1..=3 {
+            for _ in 0..300 {
+                let n = rng.random_range(3..12);
+                let mut bits = |p: u64| -> Vec<u64> {
+                    (0..n * words)
+                        .map(|_| (0..p).fold(u64::MAX, |m, _| m & rng.random::<u64>()))
+                        .collect()
+                };
+                let (room, free) = (bits(3), bits(2));
+                let (a, b) = (1, n - 2);
+                touching(&room, &free, words, a, b, &mut got);
+                let meets = |r: usize, f: usize| {
+                    (0..words).any(|i| room[r * words + i] & free[f * words + i] != 0)
+                };
+                let want: Vec<(usize, bool)> = (a..=b)
+                    .flat_map(|at| [(at, false), (at, true)])
+                    .filter(|&(at, after)| meets(at, if after { at + 1 } else { at - 1 }))
+                    .collect();
+                assert_eq!(got, want);
+            }
         }
     }
 
