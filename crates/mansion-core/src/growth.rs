@@ -309,7 +309,18 @@ pub fn grow_in<'s, R: Rng>(
         let k = active[pos];
         let (x0, y0, x1, y1) = bbox[k];
         sides.clear();
-        for side in 0u8..4 {
+        // Only the longest open sides can be chosen, so the shorter pair of sides is tested only
+        // when neither of the longer pair is open; `sides` keeps the order 0..4 within a length.
+        let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+        let order: [u8; 4] = if wide > tall {
+            [2, 3, 0, 1]
+        } else {
+            [0, 1, 2, 3]
+        };
+        for (tested, &side) in order.iter().enumerate() {
+            if tested == 2 && tall != wide && !sides.is_empty() {
+                break;
+            }
             // side 0: left, 1: right, 2: down, 3: up
             let (len, ok) = match side {
                 0 => (
