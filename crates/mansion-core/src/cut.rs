@@ -8,7 +8,7 @@
 use crate::cleanup::{self, Scratch};
 use crate::energy::{self, RoomFeatures, Weights};
 use crate::grid::{Grid, Label, Walls, EMPTY};
-use crate::growth::{self, Grower, GrowthRule};
+use crate::growth::{self, Field, GrowScratch, Grower, GrowthRule};
 use crate::region::Region;
 use crate::topology;
 use rand::{Rng, SeedableRng};
@@ -141,6 +141,21 @@ impl Reject {
     }
 }
 
+/// Buffers a rayon worker reuses from one candidate to the next.
+pub struct Workspace {
+    pub clean: Scratch,
+    pub grow: GrowScratch,
+}
+
+impl Workspace {
+    pub fn new(cells: usize) -> Self {
+        Workspace {
+            clean: Scratch::new(cells),
+            grow: GrowScratch::default(),
+        }
+    }
+}
+
 /// A round prepared once and shared by all its candidates.
 pub struct Prepared<'a> {
     pub spec: &'a RoundSpec,
@@ -149,6 +164,8 @@ pub struct Prepared<'a> {
     pub region: Region,
     /// The layout with the region emptied.
     pub base: Grid,
+    /// `base` as growth sees it.
+    pub field: Field,
     /// Round labels: growers, then the remainder label if any.
     pub labels: Vec<Label>,
     pub targets: Vec<f64>,
@@ -211,12 +228,14 @@ impl<'a> Prepared<'a> {
         for (k, &l) in labels.iter().enumerate() {
             index[l as usize] = k as i16;
         }
+        let field = Field::new(&base, walls);
         Prepared {
             spec,
             walls,
             opts,
             region,
             base,
+            field,
             labels,
             targets,
             seeds,
@@ -347,10 +366,18 @@ impl<'a> Prepared<'a> {
         &self,
         seeds: &[usize],
         rng: &mut Xoshiro256PlusPlus,
-        s: &mut Scratch,
+        ws: &mut Workspace,
     ) -> Result<(f64, Grid, Vec<RoomFeatures>), Reject> {
+        let grid = self.grow(seeds, rng, ws);
+        self.finish(grid, &mut ws.clean)
+    }
+
+    /// Growth alone: a copy of the base layout with the growers grown from `seeds`.
+    fn grow(&self, seeds: &[usize], rng: &mut Xoshiro256PlusPlus, ws: &mut Workspace) -> Grid {
         let mut grid = self.base.clone();
-        growth::grow(
+        growth::grow_in(
+            &self.field,
+            &mut ws.grow,
             &mut grid,
             self.walls,
             &self.spec.growers,
@@ -358,7 +385,7 @@ impl<'a> Prepared<'a> {
             self.opts.growth,
             rng,
         );
-        self.finish(grid, s)
+        grid
     }
 
     /// Everything after growth; public so benchmarks and references can share it.
@@ -439,7 +466,7 @@ impl<'a> Prepared<'a> {
         let results: Vec<Scored> = (0..count)
             .into_par_iter()
             .map_init(
-                || Scratch::new(cells),
+                || Workspace::new(cells),
                 |s, i| {
                     let mut rng = self.rng(retry, i as u64);
                     match seeder(i, &mut rng) {
@@ -624,16 +651,19 @@ pub fn grow_batch(
     (0..batch)
         .into_par_iter()
         .map_init(
-            || Scratch::new(n),
-            |s, i| {
+            || Workspace::new(n),
+            |ws, i| {
                 let mut rng = p.rng(0, i as u64);
-                let mut g = p.base.clone();
-                if let Some(seeds) = p.sample_seeds(&mut rng, Some(&radii)) {
-                    growth::grow(&mut g, &walls, &spec.growers, &seeds, opts.growth, &mut rng);
-                    cleanup::assign_remainder(&mut g, &p.region, &walls, region, s);
-                    cleanup::clean(&mut g, &p.region, &walls, s);
+                match p.sample_seeds(&mut rng, Some(&radii)) {
+                    Some(seeds) => {
+                        let mut g = p.grow(&seeds, &mut rng, ws);
+                        let s = &mut ws.clean;
+                        cleanup::assign_remainder(&mut g, &p.region, &walls, region, s);
+                        cleanup::clean(&mut g, &p.region, &walls, s);
+                        g
+                    }
+                    None => p.base.clone(),
                 }
-                g
             },
         )
         .collect()

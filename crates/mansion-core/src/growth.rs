@@ -67,7 +67,7 @@ fn wall_ok(grid: &Grid, walls: &Walls, c: usize, label: Label) -> bool {
 /// A bit per cell, kept both row-major and column-major so that every line test of the growth
 /// phases (a whole side free? which cells beside a room are free?) is a few word operations
 /// instead of a loop over cells. This is what keeps a 64×64 candidate in tens of microseconds.
-#[derive(Clone)]
+#[derive(Clone, Default)]
 struct Bits {
     wr: usize,
     wc: usize,
@@ -92,10 +92,18 @@ impl Bits {
         self.cols[x * self.wc + y / 64] |= 1 << (y % 64);
     }
 
+    /// Set (`on`) or clear cells `a..=b` of row `y`.
     #[inline]
-    fn clear(&mut self, x: usize, y: usize) {
-        self.rows[y * self.wr + x / 64] &= !(1 << (x % 64));
-        self.cols[x * self.wc + y / 64] &= !(1 << (y % 64));
+    fn row_span(&mut self, y: usize, a: usize, b: usize, on: bool) {
+        let line = &mut self.rows[y * self.wr..(y + 1) * self.wr];
+        span(line, a, b, on, &mut self.cols, self.wc, y);
+    }
+
+    /// Set (`on`) or clear cells `a..=b` of column `x`.
+    #[inline]
+    fn col_span(&mut self, x: usize, a: usize, b: usize, on: bool) {
+        let line = &mut self.cols[x * self.wc..(x + 1) * self.wc];
+        span(line, a, b, on, &mut self.rows, self.wr, x);
     }
 
     #[inline]
@@ -117,6 +125,32 @@ fn word_mask(i: usize, a: usize, b: usize) -> u64 {
     (u64::MAX >> (63 - hi)) & (u64::MAX << lo)
 }
 
+/// Set or clear bits `a..=b` of one line, a few words at a time, and bit `at` of each crossing
+/// line `t` in `a..=b` (stored `stride` words apart in `cross`), one at a time.
+#[inline]
+fn span(
+    line: &mut [u64],
+    a: usize,
+    b: usize,
+    on: bool,
+    cross: &mut [u64],
+    stride: usize,
+    at: usize,
+) {
+    for (i, word) in line.iter_mut().enumerate().take(b / 64 + 1).skip(a / 64) {
+        let m = word_mask(i, a, b);
+        *word = if on { *word | m } else { *word & !m };
+    }
+    let m = 1u64 << (at % 64);
+    for word in cross[a * stride + at / 64..]
+        .iter_mut()
+        .step_by(stride)
+        .take(b - a + 1)
+    {
+        *word = if on { *word | m } else { *word & !m };
+    }
+}
+
 /// Are bits `a..=b` all set? (`a > b` is an empty range: true.)
 #[inline]
 fn all_set(words: &[u64], a: usize, b: usize) -> bool {
@@ -131,6 +165,39 @@ fn all_set(words: &[u64], a: usize, b: usize) -> bool {
 #[inline]
 fn none_set(words: &[u64], a: usize, b: usize) -> bool {
     a > b || (a / 64..=b / 64).all(|i| words[i] & word_mask(i, a, b) == 0)
+}
+
+/// Call `emit(start, len)` for every maximal run of set bits in `f`, lowest first.
+#[inline]
+fn for_each_run(f: &[u64], mut emit: impl FnMut(usize, usize)) {
+    // a run that reached the top bit of the previous word and may go on in this one
+    let (mut open_start, mut open_len) = (0usize, 0usize);
+    for (i, &word) in f.iter().enumerate() {
+        let mut word = word;
+        if open_len > 0 {
+            let ones = (!word).trailing_zeros() as usize;
+            open_len += ones;
+            if ones == 64 {
+                continue;
+            }
+            emit(open_start, open_len);
+            open_len = 0;
+            word &= u64::MAX << ones;
+        }
+        while word != 0 {
+            let start = word.trailing_zeros() as usize;
+            let ones = (!(word >> start)).trailing_zeros() as usize;
+            if start + ones == 64 {
+                (open_start, open_len) = (i * 64 + start, ones);
+                break;
+            }
+            emit(i * 64 + start, ones);
+            word &= !(((1u64 << ones) - 1) << start);
+        }
+    }
+    if open_len > 0 {
+        emit(open_start, open_len);
+    }
 }
 
 /// Fixed walls as bits: `v` has the vertical edge left of cell (x, y) at (x, y) on a `(w + 1) × h`
@@ -164,6 +231,44 @@ impl WallBits {
     }
 }
 
+/// What every candidate of a round starts from: the round's free cells and its fixed walls as
+/// bits, built once per round rather than once per candidate.
+pub struct Field {
+    free: Bits,
+    walls: Option<WallBits>,
+}
+
+impl Field {
+    /// `grid` has the round's free cells `EMPTY`.
+    pub fn new(grid: &Grid, walls: &Walls) -> Self {
+        let (w, h) = (grid.w, grid.h);
+        let mut free = Bits::new(w, h);
+        for (y, row) in grid.cells.chunks_exact(w).enumerate() {
+            for (x, &c) in row.iter().enumerate() {
+                if c == EMPTY {
+                    free.set(x, y);
+                }
+            }
+        }
+        Field {
+            free,
+            walls: walls.any.then(|| WallBits::new(walls, w, h)),
+        }
+    }
+}
+
+/// Buffers of [`grow_in`], reused from one candidate to the next.
+#[derive(Default)]
+pub struct GrowScratch {
+    free: Bits,
+    rooms: Vec<Bits>,
+    area: Vec<usize>,
+    bbox: Vec<(usize, usize, usize, usize)>,
+    active: Vec<usize>,
+    sides: Vec<(usize, u8)>,
+    runs: RunScratch,
+}
+
 /// Grow every room from its seed cell. `seeds[k]` is the flat index of grower `k`'s seed, which must
 /// be an `EMPTY` cell; seeds must be distinct. Returns each grower's area in cells.
 pub fn grow<R: Rng>(
@@ -174,66 +279,79 @@ pub fn grow<R: Rng>(
     rule: GrowthRule,
     rng: &mut R,
 ) -> Vec<usize> {
-    let (w, h) = (grid.w, grid.h);
+    let field = Field::new(grid, walls);
+    let mut s = GrowScratch::default();
+    grow_in(&field, &mut s, grid, walls, growers, seeds, rule, rng).to_vec()
+}
+
+/// [`grow`] from a prepared [`Field`] (of this very grid) with reused buffers.
+pub fn grow_in<'s, R: Rng>(
+    field: &Field,
+    s: &'s mut GrowScratch,
+    grid: &mut Grid,
+    walls: &Walls,
+    growers: &[Grower],
+    seeds: &[usize],
+    rule: GrowthRule,
+    rng: &mut R,
+) -> &'s [usize] {
+    let w = grid.w;
     let n = growers.len();
-    let mut free = Bits::new(w, h);
-    for (y, row) in grid.cells.chunks_exact(w).enumerate() {
-        for (x, &c) in row.iter().enumerate() {
-            if c == EMPTY {
-                free.set(x, y);
-            }
-        }
-    }
-    let wb = walls.any.then(|| WallBits::new(walls, w, h));
-    let mut rooms: Vec<Bits> = vec![Bits::new(w, h); n];
-    let mut area = vec![0usize; n];
-    // Inclusive bounding boxes (x0, y0, x1, y1); during the rectangular phase they are the rooms.
-    let mut bbox = vec![(0usize, 0usize, 0usize, 0usize); n];
-    let take =
-        |grid: &mut Grid, free: &mut Bits, room: &mut Bits, label: Label, x: usize, y: usize| {
-            grid.cells[y * w + x] = label;
-            free.clear(x, y);
-            room.set(x, y);
-        };
+    let wb = field.walls.as_ref();
+    let free = &mut s.free;
+    free.clone_from(&field.free);
+    s.area.clear();
+    s.area.resize(n, 1);
+    let area = &mut s.area;
+    // Inclusive bounding boxes (x0, y0, x1, y1). During the rectangular phase they are the rooms,
+    // so the rooms' own bits are only written once that phase is over.
+    s.bbox.clear();
+    s.bbox
+        .extend(seeds.iter().map(|&c| (c % w, c / w, c % w, c / w)));
+    let bbox = &mut s.bbox;
     for k in 0..n {
-        let s = seeds[k];
-        debug_assert_eq!(grid.cells[s], EMPTY);
-        take(
-            grid,
-            &mut free,
-            &mut rooms[k],
-            growers[k].label,
-            s % w,
-            s / w,
-        );
-        area[k] = 1;
-        bbox[k] = (s % w, s / w, s % w, s / w);
+        let (x, y, _, _) = bbox[k];
+        debug_assert_eq!(grid.cells[y * w + x], EMPTY);
+        grid.cells[y * w + x] = growers[k].label;
+        free.row_span(y, x, x, false);
     }
 
     // --- rectangular growth: add a whole free line beside one side, longest side first ---
-    let mut active: Vec<usize> = (0..n)
-        .filter(|&k| (area[k] as f64) < growers[k].target)
-        .collect();
-    let mut sides: Vec<(usize, u8)> = Vec::with_capacity(4);
+    let active = &mut s.active;
+    active.clear();
+    active.extend((0..n).filter(|&k| (area[k] as f64) < growers[k].target));
+    let sides = &mut s.sides;
     while !active.is_empty() {
-        let pos = pick_weighted(rng, growers, &active);
+        let pos = pick_weighted(rng, growers, active);
         let k = active[pos];
         let (x0, y0, x1, y1) = bbox[k];
         sides.clear();
-        for side in 0u8..4 {
+        // Under the longest-side rule only the longest open sides can be chosen, so the shorter
+        // pair of sides is tested only when neither of the longer pair is open; `sides` keeps the
+        // order 0..4 within a length. The balanced rule weighs every open side.
+        let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+        let order: [u8; 4] = if wide > tall {
+            [2, 3, 0, 1]
+        } else {
+            [0, 1, 2, 3]
+        };
+        for (tested, &side) in order.iter().enumerate() {
+            if rule == GrowthRule::Longest && tested == 2 && tall != wide && !sides.is_empty() {
+                break;
+            }
             // side 0: left, 1: right, 2: down, 3: up
             let (len, ok) = match side {
                 0 => (
                     y1 - y0 + 1,
                     all_set(free.col(x0 - 1), y0, y1)
-                        && wb.as_ref().is_none_or(|b| {
+                        && wb.is_none_or(|b| {
                             none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)
                         }),
                 ),
                 1 => (
                     y1 - y0 + 1,
                     all_set(free.col(x1 + 1), y0, y1)
-                        && wb.as_ref().is_none_or(|b| {
+                        && wb.is_none_or(|b| {
                             none_set(b.v.col(x1 + 1), y0, y1)
                                 && none_set(b.h.col(x1 + 1), y0 + 1, y1)
                         }),
@@ -241,14 +359,14 @@ pub fn grow<R: Rng>(
                 2 => (
                     x1 - x0 + 1,
                     all_set(free.row(y0 - 1), x0, x1)
-                        && wb.as_ref().is_none_or(|b| {
+                        && wb.is_none_or(|b| {
                             none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)
                         }),
                 ),
                 _ => (
                     x1 - x0 + 1,
                     all_set(free.row(y1 + 1), x0, x1)
-                        && wb.as_ref().is_none_or(|b| {
+                        && wb.is_none_or(|b| {
                             none_set(b.h.row(y1 + 1), x0, x1)
                                 && none_set(b.v.row(y1 + 1), x0 + 1, x1)
                         }),
@@ -296,54 +414,69 @@ pub fn grow<R: Rng>(
             .filter(|s| s.0 == best)
             .nth(pick)
             .map_or(0, |s| s.1);
-        let (nx0, ny0, nx1, ny1) = match side {
-            0 => (x0 - 1, y0, x0 - 1, y1),
-            1 => (x1 + 1, y0, x1 + 1, y1),
-            2 => (x0, y0 - 1, x1, y0 - 1),
-            _ => (x0, y1 + 1, x1, y1 + 1),
-        };
-        for y in ny0..=ny1 {
-            for x in nx0..=nx1 {
-                take(grid, &mut free, &mut rooms[k], growers[k].label, x, y);
+        let label = growers[k].label;
+        match side {
+            0 | 1 => {
+                let x = if side == 0 { x0 - 1 } else { x1 + 1 };
+                take_col(grid, free, x, y0, y1, label);
+                bbox[k] = (x0.min(x), y0, x1.max(x), y1);
+            }
+            _ => {
+                let y = if side == 2 { y0 - 1 } else { y1 + 1 };
+                take_row(grid, free, y, x0, x1, label);
+                bbox[k] = (x0, y0.min(y), x1, y1.max(y));
             }
         }
         area[k] += best;
-        bbox[k] = (x0.min(nx0), y0.min(ny0), x1.max(nx1), y1.max(ny1));
         if area[k] as f64 >= growers[k].target {
             active.swap_remove(pos);
         }
     }
 
     // --- L-shaped growth: extend by the longest run of free cells beside the room's own cells ---
-    let mut active: Vec<usize> = (0..n)
-        .filter(|&k| (area[k] as f64) < growers[k].target)
-        .collect();
-    let mut scratch = RunScratch::new(free.wr.max(free.wc));
+    s.rooms.resize_with(n, Bits::default);
+    for (room, &(x0, y0, x1, y1)) in s.rooms.iter_mut().zip(bbox.iter()) {
+        room.clone_from(&field.free);
+        room.rows.fill(0);
+        room.cols.fill(0);
+        for y in y0..=y1 {
+            room.row_span(y, x0, x1, true);
+        }
+    }
+    active.clear();
+    active.extend((0..n).filter(|&k| (area[k] as f64) < growers[k].target));
+    s.runs.f.resize(free.wr.max(free.wc), 0);
+    s.runs.zeros.resize(free.wr.max(free.wc), 0);
     while !active.is_empty() {
-        let pos = pick_weighted(rng, growers, &active);
+        let pos = pick_weighted(rng, growers, active);
         let k = active[pos];
         let label = growers[k].label;
+        let room = &mut s.rooms[k];
         match best_run(
             grid,
             walls,
-            wb.as_ref(),
-            &free,
-            &rooms[k],
+            wb,
+            free,
+            room,
             label,
             bbox[k],
-            &mut scratch,
+            &mut s.runs,
             rng,
         ) {
             Some(run) if within_cap(area[k], run.len, growers[k].target) => {
-                let step = if run.horizontal { 1 } else { w };
-                for t in 0..run.len {
-                    let c = run.start + t * step;
-                    take(grid, &mut free, &mut rooms[k], label, c % w, c / w);
-                }
-                area[k] += run.len;
                 let (sx, sy) = (run.start % w, run.start / w);
-                let end = run.start + (run.len - 1) * step;
-                let (ex, ey) = (end % w, end / w);
+                let (ex, ey) = if run.horizontal {
+                    let ex = sx + run.len - 1;
+                    take_row(grid, free, sy, sx, ex, label);
+                    room.row_span(sy, sx, ex, true);
+                    (ex, sy)
+                } else {
+                    let ey = sy + run.len - 1;
+                    take_col(grid, free, sx, sy, ey, label);
+                    room.col_span(sx, sy, ey, true);
+                    (sx, ey)
+                };
+                area[k] += run.len;
                 let (x0, y0, x1, y1) = bbox[k];
                 bbox[k] = (x0.min(sx), y0.min(sy), x1.max(ex), y1.max(ey));
                 if area[k] as f64 >= growers[k].target {
@@ -355,7 +488,23 @@ pub fn grow<R: Rng>(
             }
         }
     }
-    area
+    &s.area
+}
+
+/// Give cells `a..=b` of row `y` to `label`.
+#[inline]
+fn take_row(grid: &mut Grid, free: &mut Bits, y: usize, a: usize, b: usize, label: Label) {
+    grid.cells[y * grid.w + a..=y * grid.w + b].fill(label);
+    free.row_span(y, a, b, false);
+}
+
+/// Give cells `a..=b` of column `x` to `label`.
+#[inline]
+fn take_col(grid: &mut Grid, free: &mut Bits, x: usize, a: usize, b: usize, label: Label) {
+    for y in a..=b {
+        grid.cells[y * grid.w + x] = label;
+    }
+    free.col_span(x, a, b, false);
 }
 
 /// A run of free cells to add in the L-shaped phase.
@@ -366,17 +515,84 @@ struct Run {
     horizontal: bool,
 }
 
+#[derive(Default)]
 struct RunScratch {
     f: Vec<u64>,
+    /// As many zero words as `f` has.
+    zeros: Vec<u64>,
+    /// Lines worth reading: (line, whether the free cells lie after it).
+    lines: Vec<(usize, bool)>,
     best: Vec<Run>,
 }
 
-impl RunScratch {
-    fn new(words: usize) -> Self {
-        RunScratch {
-            f: vec![0; words],
-            best: Vec::new(),
+/// The lines `at` in `a..=b` (of `words` words each in `room` and `free`) where some room cell
+/// has a free cell on the line before (`(at, false)`) or after (`(at, true)`), in that order.
+fn touching(
+    room: &[u64],
+    free: &[u64],
+    words: usize,
+    a: usize,
+    b: usize,
+    out: &mut Vec<(usize, bool)>,
+) {
+    out.clear();
+    let rooms = &room[a * words..(b + 1) * words];
+    let below = &free[(a - 1) * words..b * words];
+    let above = &free[(a + 1) * words..(b + 2) * words];
+    // lines of one or two words (grids up to 128 cells across) get a fully unrolled loop
+    match words {
+        1 => touching_n::<1>(rooms, below, above, a, out),
+        2 => touching_n::<2>(rooms, below, above, a, out),
+        _ => {
+            let lines = rooms.chunks_exact(words);
+            let (lo, hi) = (below.chunks_exact(words), above.chunks_exact(words));
+            for (k, ((r, lo), hi)) in lines.zip(lo).zip(hi).enumerate() {
+                let meets = |f: &[u64]| r.iter().zip(f).any(|(x, y)| x & y != 0);
+                touch(out, a + k, meets(lo), meets(hi));
+            }
         }
+    }
+}
+
+#[inline]
+fn touching_n<const N: usize>(
+    rooms: &[u64],
+    below: &[u64],
+    above: &[u64],
+    a: usize,
+    out: &mut Vec<(usize, bool)>,
+) {
+    let lines = rooms.chunks_exact(N);
+    let (lo, hi) = (below.chunks_exact(N), above.chunks_exact(N));
+    for (k, ((r, lo), hi)) in lines.zip(lo).zip(hi).enumerate() {
+        let (mut m_lo, mut m_hi) = (0, 0);
+        for i in 0..N {
+            m_lo |= r[i] & lo[i];
+            m_hi |= r[i] & hi[i];
+        }
+        touch(out, a + k, m_lo != 0, m_hi != 0);
+    }
+}
+
+#[inline]
+fn touch(out: &mut Vec<(usize, bool)>, at: usize, before: bool, after: bool) {
+    if before {
+        out.push((at, false));
+    }
+    if after {
+        out.push((at, true));
+    }
+}
+
+/// Keep `run` if it is at least as long as the best so far (runs of one cell only make spurs).
+#[inline]
+fn offer(run: Run, best_len: &mut usize, best: &mut Vec<Run>) {
+    if run.len > *best_len {
+        *best_len = run.len;
+        best.clear();
+    }
+    if run.len == *best_len && run.len > 1 {
+        best.push(run);
     }
 }
 
@@ -397,25 +613,25 @@ fn best_run<R: Rng>(
     let w = grid.w;
     let (x0, y0, x1, y1) = bbox;
     s.best.clear();
-    let mut best_len = 1usize; // runs of one cell only make spurs
-                               // rows beyond the bottom and top of the room's cells: runs along x, split by vertical walls
-    for y in y0..=y1 {
-        for up in [false, true] {
-            let ty = if up { y + 1 } else { y - 1 };
-            let (rr, fr) = (room.row(y), free.row(ty));
-            for i in 0..free.wr {
-                s.f[i] = rr[i] & fr[i];
-                if let Some(b) = wb {
-                    // the edge between the room cell and the new cell must be open
-                    s.f[i] &= !b.h.row(if up { ty } else { y })[i];
-                }
-            }
-            let sep = wb.map(|b| b.v.row(ty));
+    let mut best_len = 1usize;
+    // One line of candidate cells: without walls its maximal runs are the runs; with walls each
+    // cell is vetted and runs split where a wall crosses the line.
+    let mut line = |f: &[u64], sep: Option<&[u64]>, cell: &dyn Fn(usize) -> usize, horizontal| {
+        if wb.is_none() {
+            for_each_run(f, |p, len| {
+                let run = Run {
+                    start: cell(p),
+                    len,
+                    horizontal,
+                };
+                offer(run, &mut best_len, &mut s.best);
+            });
+        } else {
             scan_runs(
-                &s.f[..free.wr],
+                f,
                 sep,
-                |x| ty * w + x,
-                true,
+                cell,
+                horizontal,
                 grid,
                 walls,
                 label,
@@ -423,29 +639,49 @@ fn best_run<R: Rng>(
                 &mut s.best,
             );
         }
+    };
+    // Few lines hold a candidate cell (most lie inside the room or against other rooms), so the
+    // lines are first screened as whole words, then only those few are read cell by cell; the
+    // walls' words read as zero when there are none.
+    let no_walls = &s.zeros[..free.wr.max(free.wc)];
+    // rows beyond the bottom and top of the room's cells: runs along x, split by vertical walls
+    touching(&room.rows, &free.rows, free.wr, y0, y1, &mut s.lines);
+    for &(y, up) in &s.lines {
+        let ty = if up { y + 1 } else { y - 1 };
+        let (rr, fr) = (room.row(y), free.row(ty));
+        // the edge between the room cell and the new cell must be open
+        let shut = wb.map_or(no_walls, |b| b.h.row(if up { ty } else { y }));
+        let mut any = 0;
+        for i in 0..free.wr {
+            s.f[i] = rr[i] & fr[i] & !shut[i];
+            any |= s.f[i];
+        }
+        if any != 0 {
+            line(
+                &s.f[..free.wr],
+                wb.map(|b| b.v.row(ty)),
+                &|x| ty * w + x,
+                true,
+            );
+        }
     }
     // columns beyond the left and right of the room's cells: runs along y, split by horizontal walls
-    for x in x0..=x1 {
-        for right in [false, true] {
-            let tx = if right { x + 1 } else { x - 1 };
-            let (rc, fc) = (room.col(x), free.col(tx));
-            for i in 0..free.wc {
-                s.f[i] = rc[i] & fc[i];
-                if let Some(b) = wb {
-                    s.f[i] &= !b.v.col(if right { tx } else { x })[i];
-                }
-            }
-            let sep = wb.map(|b| b.h.col(tx));
-            scan_runs(
+    touching(&room.cols, &free.cols, free.wc, x0, x1, &mut s.lines);
+    for &(x, right) in &s.lines {
+        let tx = if right { x + 1 } else { x - 1 };
+        let (rc, fc) = (room.col(x), free.col(tx));
+        let shut = wb.map_or(no_walls, |b| b.v.col(if right { tx } else { x }));
+        let mut any = 0;
+        for i in 0..free.wc {
+            s.f[i] = rc[i] & fc[i] & !shut[i];
+            any |= s.f[i];
+        }
+        if any != 0 {
+            line(
                 &s.f[..free.wc],
-                sep,
-                |y| y * w + tx,
+                wb.map(|b| b.h.col(tx)),
+                &|y| y * w + tx,
                 false,
-                grid,
-                walls,
-                label,
-                &mut best_len,
-                &mut s.best,
             );
         }
     }
@@ -468,7 +704,7 @@ fn best_run<R: Rng>(
 fn scan_runs(
     f: &[u64],
     sep: Option<&[u64]>,
-    cell: impl Fn(usize) -> usize,
+    cell: &dyn Fn(usize) -> usize,
     horizontal: bool,
     grid: &Grid,
     walls: &Walls,
@@ -479,18 +715,13 @@ fn scan_runs(
     let mut run_start = usize::MAX;
     let mut prev = usize::MAX;
     let mut len = 0usize;
-    let close = |start: usize, len: usize, best_len: &mut usize, best: &mut Vec<Run>| {
-        if len > *best_len {
-            *best_len = len;
-            best.clear();
-        }
-        if len == *best_len && len > 1 {
-            best.push(Run {
-                start: cell(start),
-                len,
-                horizontal,
-            });
-        }
+    let mut close = |start: usize, len: usize| {
+        let run = Run {
+            start: cell(start),
+            len,
+            horizontal,
+        };
+        offer(run, best_len, best);
     };
     for (i, &w0) in f.iter().enumerate() {
         let mut word = w0;
@@ -508,7 +739,7 @@ fn scan_runs(
                 len += 1;
             } else {
                 if len > 0 {
-                    close(run_start, len, best_len, best);
+                    close(run_start, len);
                 }
                 run_start = p;
                 len = 1;
@@ -517,7 +748,7 @@ fn scan_runs(
         }
     }
     if len > 0 {
-        close(run_start, len, best_len, best);
+        close(run_start, len);
     }
 }
 
@@ -685,6 +916,94 @@ mod tests {
                 );
             }
             assert!(g.count(1) <= 24);
+        }
+    }
+
+    #[test]
+    fn runs_of_bits_match_a_bit_by_bit_walk() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(5);
+        for case in 0..2000 {
+            let words = 1 + case % 3;
+            // sparse, dense and all-ones words, so runs cross word boundaries
+            let f: Vec<u64> = (0..words)
+                .map(|_| match rng.random_range(0..4) {
+                    0 => rng.random::<u64>() & rng.random::<u64>(),
+                    1 => rng.random::<u64>() | rng.random::<u64>(),
+                    2 => u64::MAX,
+                    _ => u64::MAX << rng.random_range(0..64),
+                })
+                .collect();
+            let mut want = Vec::new();
+            let mut run: Option<(usize, usize)> = None;
+            for p in 0..words * 64 {
+                if f[p / 64] >> (p % 64) & 1 == 1 {
+                    run = Some(run.map_or((p, 1), |(s, l)| (s, l + 1)));
+                } else if let Some(r) = run.take() {
+                    want.push(r);
+                }
+            }
+            want.extend(run);
+            let mut got = Vec::new();
+            for_each_run(&f, |s, l| got.push((s, l)));
+            assert_eq!(got, want, "{f:x?}");
+        }
+    }
+
+    #[test]
+    fn touching_lines_match_a_cell_by_cell_test() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(7);
+        let mut got = Vec::new();
+        for words in 1..=3 {
+            for _ in 0..300 {
+                let n = rng.random_range(3..12);
+                let mut bits = |p: u64| -> Vec<u64> {
+                    (0..n * words)
+                        .map(|_| (0..p).fold(u64::MAX, |m, _| m & rng.random::<u64>()))
+                        .collect()
+                };
+                let (room, free) = (bits(3), bits(2));
+                let (a, b) = (1, n - 2);
+                touching(&room, &free, words, a, b, &mut got);
+                let meets = |r: usize, f: usize| {
+                    (0..words).any(|i| room[r * words + i] & free[f * words + i] != 0)
+                };
+                let want: Vec<(usize, bool)> = (a..=b)
+                    .flat_map(|at| [(at, false), (at, true)])
+                    .filter(|&(at, after)| meets(at, if after { at + 1 } else { at - 1 }))
+                    .collect();
+                assert_eq!(got, want);
+            }
+        }
+    }
+
+    #[test]
+    fn spans_set_and_clear_rows_and_columns_alike() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(9);
+        let (w, h) = (130, 70);
+        let mut spans = Bits::new(w, h);
+        let mut cells = Bits::new(w, h);
+        for _ in 0..500 {
+            let on = rng.random_range(0..3) > 0;
+            let (along, across) = if rng.random() { (w, h) } else { (h, w) };
+            let a = rng.random_range(0..along);
+            let b = rng.random_range(a..along);
+            let at = rng.random_range(0..across);
+            if along == w {
+                spans.row_span(at, a, b, on);
+            } else {
+                spans.col_span(at, a, b, on);
+            }
+            for t in a..=b {
+                let (x, y) = if along == w { (t, at) } else { (at, t) };
+                let (r, c) = (y * cells.wr + x / 64, x * cells.wc + y / 64);
+                if on {
+                    cells.set(x, y);
+                } else {
+                    cells.rows[r] &= !(1 << (x % 64));
+                    cells.cols[c] &= !(1 << (y % 64));
+                }
+            }
+            assert!(spans.rows == cells.rows && spans.cols == cells.cols);
         }
     }
 

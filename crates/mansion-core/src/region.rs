@@ -144,6 +144,43 @@ pub fn parse_rows(rows: &[&str]) -> Grid {
     pad(&g, OUTSIDE)
 }
 
+/// A padded grid of overlapping random rectangles of labels 0..6, `EMPTY` and `OUTSIDE`, a
+/// random region in it, and a random choice of round labels.
+#[cfg(test)]
+pub fn random_case(rng: &mut impl rand::Rng) -> (Grid, Region, Vec<i16>, usize) {
+    let (w, h) = (rng.random_range(3..80), rng.random_range(3..40));
+    use crate::grid::{EMPTY, OUTSIDE};
+    let mut g = Grid::new(w, h, 0);
+    let mut m = Grid::new(w, h, 0);
+    for _ in 0..rng.random_range(1..30) {
+        let (ax, ay) = (rng.random_range(0..w), rng.random_range(0..h));
+        let (bx, by) = (rng.random_range(ax..w), rng.random_range(ay..h));
+        let l = match rng.random_range(0..9) {
+            7 => EMPTY,
+            8 => OUTSIDE,
+            l => l,
+        };
+        let inside = rng.random_range(0..4) > 0;
+        for y in ay..=by {
+            for x in ax..=bx {
+                g.set(x, y, l);
+                m.set(x, y, if inside { 0 } else { OUTSIDE });
+            }
+        }
+    }
+    let (g, m) = (pad(&g, OUTSIDE), pad(&m, OUTSIDE));
+    let r = Region::of_label(&m, 0);
+    let mut index = vec![-1i16; 7];
+    let mut n_round = 0;
+    for k in index.iter_mut() {
+        if rng.random() {
+            *k = n_round as i16;
+            n_round += 1;
+        }
+    }
+    (g, r, index, n_round)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -323,24 +323,26 @@ impl SeedPlanner for HeuristicPlanner {
                 .insert(child.id.clone(), ChildSeed::point(req.to_plan(g)));
         }
         if req.want_parent_seed {
-            // the parent grows from the region cell farthest from every child seed
-            let far = cells
-                .iter()
-                .copied()
-                .max_by(|&a, &b| {
-                    let d = |c: usize| {
-                        placed
-                            .iter()
-                            .map(|&(q, _)| {
-                                (((c % w) as f64 - (q % w) as f64).powi(2)
-                                    + ((c / w) as f64 - (q / w) as f64).powi(2))
-                                .sqrt()
-                            })
-                            .fold(f64::INFINITY, f64::min)
-                    };
-                    d(a).total_cmp(&d(b)).then(b.cmp(&a))
-                })
-                .unwrap_or(cells[0]);
+            // the parent grows from the region cell farthest from every child seed (the first such
+            // cell on ties); each cell's distance is computed once
+            let gap = |c: usize| {
+                placed
+                    .iter()
+                    .map(|&(q, _)| {
+                        (((c % w) as f64 - (q % w) as f64).powi(2)
+                            + ((c / w) as f64 - (q / w) as f64).powi(2))
+                        .sqrt()
+                    })
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let mut far = (f64::NEG_INFINITY, cells[0]);
+            for &c in &cells {
+                let d = gap(c);
+                if d.total_cmp(&far.0).is_gt() {
+                    far = (d, c);
+                }
+            }
+            let far = far.1;
             plan.parent_seed = Some(req.to_plan([(far % w) as f64 + 0.5, (far / w) as f64 + 0.5]));
         }
         Ok(plan)

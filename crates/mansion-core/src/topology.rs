@@ -47,6 +47,9 @@ fn is_room(l: Label) -> bool {
 
 /// Measure contacts along every cell edge that touches the region. `index[label]` is the label's
 /// position among the round labels, or -1; `n_round` is how many round labels there are.
+///
+/// Both edge directions are read a row at a time, so each line is contiguous memory whose equal
+/// stretches (most of it: the inside of rooms) are skipped several cells at a time.
 pub fn measure_contacts(grid: &Grid, region: &Region, index: &[i16], n_round: usize) -> Contacts {
     let n_labels = index.len();
     let mut c = Contacts {
@@ -56,27 +59,88 @@ pub fn measure_contacts(grid: &Grid, region: &Region, index: &[i16], n_round: us
     };
     let w = grid.w;
     let (x0, y0, x1, y1) = region.bbox;
-    // edges between row y and row y + 1, scanned along x so straight runs are contiguous
+    // edges between row y and row y + 1, runs along x
     for y in (y0 - 1)..=y1 {
-        let mut run_slot = usize::MAX;
-        let mut run = 0u32;
-        for x in x0..=x1 {
-            let (i, j) = (y * w + x, (y + 1) * w + x);
-            let slot = edge_slot(grid, region, &c, index, i, j);
-            advance(&mut c, slot, &mut run_slot, &mut run);
-        }
+        let (lo, hi) = (y * w + x0, (y + 1) * w + x0);
+        let n = x1 - x0 + 1;
+        let mut run = Run::NONE;
+        for_each_diff(&grid.cells[lo..lo + n], &grid.cells[hi..hi + n], |j| {
+            let slot = edge_slot(grid, region, &c, index, lo + j, hi + j);
+            run.advance(&mut c, slot, j);
+        });
     }
-    // edges between column x and column x + 1, scanned along y
-    for x in (x0 - 1)..=x1 {
-        let mut run_slot = usize::MAX;
-        let mut run = 0u32;
-        for y in y0..=y1 {
-            let (i, j) = (y * w + x, y * w + x + 1);
-            let slot = edge_slot(grid, region, &c, index, i, j);
-            advance(&mut c, slot, &mut run_slot, &mut run);
-        }
+    // edges between column x and column x + 1, runs along y: one run per column, carried from
+    // row to row
+    let mut runs = vec![Run::NONE; x1 - x0 + 2];
+    for y in y0..=y1 {
+        let lo = y * w + x0 - 1;
+        let n = x1 - x0 + 2;
+        for_each_diff(
+            &grid.cells[lo..lo + n],
+            &grid.cells[lo + 1..lo + 1 + n],
+            |j| {
+                let slot = edge_slot(grid, region, &c, index, lo + j, lo + j + 1);
+                runs[j].advance(&mut c, slot, y);
+            },
+        );
     }
     c
+}
+
+/// Call `f(j)` for every position where the two lines differ, lowest first, skipping equal
+/// stretches eight cells at a time.
+#[inline]
+fn for_each_diff(a: &[Label], b: &[Label], mut f: impl FnMut(usize)) {
+    let chunks = a.len() / 8;
+    for (k, (ca, cb)) in a.chunks_exact(8).zip(b.chunks_exact(8)).enumerate() {
+        if ca != cb {
+            for j in (0..8).filter(|&j| ca[j] != cb[j]) {
+                f(k * 8 + j);
+            }
+        }
+    }
+    for j in (chunks * 8..a.len()).filter(|&j| a[j] != b[j]) {
+        f(j);
+    }
+}
+
+/// A straight stretch of shared wall being followed along a line.
+#[derive(Debug, Clone, Copy)]
+struct Run {
+    /// Contact slot of the stretch, or `usize::MAX` for none.
+    slot: usize,
+    len: u32,
+    /// Position along the line of the stretch's last edge.
+    at: usize,
+}
+
+impl Run {
+    const NONE: Run = Run {
+        slot: usize::MAX,
+        len: 0,
+        at: 0,
+    };
+
+    /// Edge `at` of the line has contact slot `slot` (`usize::MAX`: no contact). Edges not offered
+    /// between two calls broke the stretch.
+    #[inline]
+    fn advance(&mut self, c: &mut Contacts, slot: usize, at: usize) {
+        if slot == usize::MAX {
+            self.slot = usize::MAX;
+            return;
+        }
+        if slot == self.slot && at == self.at + 1 {
+            self.len += 1;
+        } else {
+            self.slot = slot;
+            self.len = 1;
+        }
+        self.at = at;
+        c.total[slot] += 1;
+        if self.len > c.longest[slot] {
+            c.longest[slot] = self.len;
+        }
+    }
 }
 
 #[inline]
@@ -95,27 +159,12 @@ fn edge_slot(
     c.slot(index, a, b).unwrap_or(usize::MAX)
 }
 
-#[inline]
-fn advance(c: &mut Contacts, slot: usize, run_slot: &mut usize, run: &mut u32) {
-    if slot == usize::MAX {
-        *run_slot = usize::MAX;
-        *run = 0;
-        return;
-    }
-    if slot == *run_slot {
-        *run += 1;
-    } else {
-        *run_slot = slot;
-        *run = 1;
-    }
-    c.total[slot] += 1;
-    if *run > c.longest[slot] {
-        c.longest[slot] = *run;
-    }
-}
-
 /// Number of 4-connected pieces of every round label inside the region, in one pass
 /// (`index[label]` is the label's round position or -1).
+///
+/// Works on runs rather than cells: each row's runs of one label are joined (union–find) with the
+/// runs of the same label they touch in the row below; a label's pieces are its runs less the
+/// joins that merged two pieces.
 pub fn pieces_all(
     grid: &Grid,
     region: &Region,
@@ -124,31 +173,75 @@ pub fn pieces_all(
     s: &mut Scratch,
 ) -> Vec<u32> {
     let w = grid.w;
-    let epoch = s.bump();
+    let (x0, y0, x1, y1) = region.bbox;
     let mut out = vec![0u32; n_round];
-    for &start in &region.cells {
-        let start = start as usize;
-        if s.stamp[start] == epoch {
-            continue;
-        }
-        let label = grid.cells[start];
-        match index.get(label as usize) {
-            Some(&k) if k >= 0 => out[k as usize] += 1,
-            _ => continue,
-        }
-        s.queue.clear();
-        s.queue.push(start);
-        s.stamp[start] = epoch;
-        while let Some(c) = s.queue.pop() {
-            for nb in [c - 1, c + 1, c - w, c + w] {
-                if grid.cells[nb] == label && s.stamp[nb] != epoch && region.inside[nb] {
-                    s.stamp[nb] = epoch;
-                    s.queue.push(nb);
-                }
+    let round = |i: usize| match index.get(grid.cells[i] as usize) {
+        Some(&k) if k >= 0 && region.inside[i] => Some(k as usize),
+        _ => None,
+    };
+    // (first x, last x, run id); the previous row's runs are `runs[below.clone()]`
+    let runs = &mut s.runs;
+    let parent = &mut s.parent;
+    runs.clear();
+    parent.clear();
+    let mut below = 0..0;
+    for y in y0..=y1 {
+        let row = y * w;
+        let start = runs.len();
+        let mut p = below.start;
+        let mut x = x0;
+        while x <= x1 {
+            let Some(k) = round(row + x) else {
+                x += 1;
+                continue;
+            };
+            let l = grid.cells[row + x];
+            let mut end = x;
+            while end < x1 && grid.cells[row + end + 1] == l && region.inside[row + end + 1] {
+                end += 1;
             }
+            let id = parent.len() as u32;
+            parent.push(id);
+            runs.push((x as u32, end as u32, id));
+            out[k] += 1;
+            // runs below that end left of this one cannot touch it or any later run of the row
+            while p < below.end && (runs[p].1 as usize) < x {
+                p += 1;
+            }
+            let mut q = p;
+            while q < below.end && (runs[q].0 as usize) <= end {
+                let (bx, _, bid) = runs[q];
+                if grid.cells[row - w + bx as usize] == l && union(parent, id, bid) {
+                    out[k] -= 1;
+                }
+                q += 1;
+            }
+            x = end + 1;
         }
+        below = start..runs.len();
     }
     out
+}
+
+/// Join the sets of `a` and `b`; false when they were one set already.
+#[inline]
+fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
+    let (ra, rb) = (find(parent, a), find(parent, b));
+    if ra == rb {
+        return false;
+    }
+    parent[ra as usize] = rb;
+    true
+}
+
+#[inline]
+fn find(parent: &mut [u32], mut a: u32) -> u32 {
+    while parent[a as usize] != a {
+        let up = parent[parent[a as usize] as usize];
+        parent[a as usize] = up;
+        a = up;
+    }
+    a
 }
 
 /// Does `label` own the cells on both sides of a fixed wall somewhere in the region?
@@ -225,7 +318,7 @@ pub fn min_width_ok(grid: &Grid, region: &Region, label: Label, width: usize) ->
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::region::parse_rows;
+    use crate::region::{parse_rows, random_case};
 
     fn parse(rows: &[&str]) -> Grid {
         parse_rows(rows)
@@ -270,6 +363,94 @@ mod tests {
         let index = [-1i16, 0, 1];
         assert_eq!(pieces_all(&g, &r, &index, 2, &mut s), vec![2, 1]);
         assert_eq!((g.count(1), g.count(2)), (4, 4));
+    }
+
+    /// Contacts by definition: every edge touching the region between a round room and another
+    /// room, with straight stretches followed along each grid line.
+    fn contacts_ref(g: &Grid, r: &Region, index: &[i16], n_round: usize) -> Contacts {
+        let mut c = Contacts {
+            n_labels: index.len(),
+            total: vec![0; n_round * index.len()],
+            longest: vec![0; n_round * index.len()],
+        };
+        let w = g.w;
+        let mut lines: Vec<Vec<(usize, usize)>> = Vec::new();
+        for y in 0..g.h - 1 {
+            lines.push((0..w).map(|x| (y * w + x, (y + 1) * w + x)).collect());
+        }
+        for x in 0..w - 1 {
+            lines.push((0..g.h).map(|y| (y * w + x, y * w + x + 1)).collect());
+        }
+        for line in lines {
+            let mut prev = None;
+            let mut run = 0;
+            for (i, j) in line {
+                let (a, b) = (g.cells[i], g.cells[j]);
+                let slot = (a != b && is_room(a) && is_room(b) && (r.inside[i] || r.inside[j]))
+                    .then(|| c.slot(index, a, b))
+                    .flatten();
+                run = if slot.is_some() && slot == prev {
+                    run + 1
+                } else {
+                    1
+                };
+                prev = slot;
+                if let Some(s) = slot {
+                    c.total[s] += 1;
+                    c.longest[s] = c.longest[s].max(run);
+                }
+            }
+        }
+        c
+    }
+
+    /// Pieces by definition: a flood fill from every unvisited region cell of a round label.
+    fn pieces_ref(g: &Grid, r: &Region, index: &[i16], n_round: usize) -> Vec<u32> {
+        let mut seen = vec![false; g.cells.len()];
+        let mut out = vec![0; n_round];
+        for &c in &r.cells {
+            let c = c as usize;
+            let l = g.cells[c];
+            let k = index.get(l as usize).copied().unwrap_or(-1);
+            if seen[c] || k < 0 {
+                continue;
+            }
+            out[k as usize] += 1;
+            let mut stack = vec![c];
+            seen[c] = true;
+            while let Some(c) = stack.pop() {
+                for n in [c - 1, c + 1, c - g.w, c + g.w] {
+                    if !seen[n] && r.inside[n] && g.cells[n] == l {
+                        seen[n] = true;
+                        stack.push(n);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn contacts_and_pieces_match_their_definitions_on_random_grids() {
+        use rand::SeedableRng;
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(11);
+        let mut s = Scratch::new(0);
+        for _ in 0..3000 {
+            let (g, r, index, n_round) = random_case(&mut rng);
+            if r.is_empty() {
+                continue;
+            }
+            s.stamp.resize(g.cells.len(), 0);
+            let (got, want) = (
+                measure_contacts(&g, &r, &index, n_round),
+                contacts_ref(&g, &r, &index, n_round),
+            );
+            assert_eq!((got.total, got.longest), (want.total, want.longest));
+            assert_eq!(
+                pieces_all(&g, &r, &index, n_round, &mut s),
+                pieces_ref(&g, &r, &index, n_round)
+            );
+        }
     }
 
     #[test]
