@@ -285,6 +285,8 @@ pub fn grow<R: Rng>(
 }
 
 /// [`grow`] from a prepared [`Field`] (of this very grid) with reused buffers.
+// The hot path of every candidate: plain arguments, no per-call struct to assemble.
+#[allow(clippy::too_many_arguments)]
 pub fn grow_in<'s, R: Rng>(
     field: &Field,
     s: &'s mut GrowScratch,
