@@ -131,8 +131,8 @@ def test_worker_count_does_not_change_scores(plans_dir: Path) -> None:
 
 
 def test_weight_search_writes_weights_the_eval_accepts(plans_dir: Path, tmp_path: Path) -> None:
-    result = tune_weights(plans_dir, samples=2, seed=1, workers=1)
-    assert len(result.trials) == 3 and result.trials[0].weights == EnergyWeights()
+    result = tune_weights(plans_dir, samples=2, refine=2, seed=1, workers=1)
+    assert len(result.trials) == 5 and result.trials[0].weights == EnergyWeights()
     assert result.even[2] == 4 and result.odd[2] == 4 and result.all[2] == 8
     best = max(result.trials, key=lambda t: t.objective)
     assert result.best == best.weights
@@ -163,7 +163,8 @@ def test_cli_eval_writes_json_and_gallery(plans_dir: Path, tmp_path: Path) -> No
 def test_cli_tune_weights(plans_dir: Path, tmp_path: Path) -> None:
     out = tmp_path / "best.json"
     res = CliRunner().invoke(
-        app, ["tune-weights", "--data", str(plans_dir), "--samples", "1", "--out", str(out), "--workers", "1"]
+        app, ["tune-weights", "--data", str(plans_dir), "--samples", "1", "--refine", "1", "--out", str(out),
+         "--workers", "1"]
     )
     assert res.exit_code == 0, res.output
     assert "held-out odd ids" in res.output

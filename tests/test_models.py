@@ -266,11 +266,11 @@ def test_label_grid_shape_is_checked() -> None:
 
 def test_settings_and_weights_round_trip(tmp_path: Any) -> None:
     w = EnergyWeights()
-    assert (w.ratio, w.seed, w.wall, w.corner) == (6.0, 0.2, 0.8, 3.0)
+    assert (w.ratio, w.seed, w.drift, w.wall, w.corner) == (1.28, 0.21, 17.65, 0.57, 0.29)
     roundtrip(w)
     roundtrip(EnergyWeights(ratio=1.5, seed=0.0, wall=2.0, corner=0.25))
     s = SolverSettings()
-    assert s.gammas[0] == 1.0 and len(s.gammas) == 10
+    assert s.gammas[0] == 0.25 and len(s.gammas) == 10 and s.growth == "balanced"
     roundtrip(s)
     roundtrip(SolverSettings(k=4.0, gammas=[1.0, 2.0], min_width=3, fallback_samples=50))
 

@@ -40,7 +40,19 @@ def test_fixed_planner_through_the_callback() -> None:
             "store": {"point": [5.0, 3.0], "fraction": None},
         },
         "parent_seed": [3.0, 2.0],
+        "descendant_seeds": {},
     }
+
+
+def test_fixed_planner_passes_descendants_points() -> None:
+    request = json.loads(REQUEST_JSON)
+    request["children"][0]["descendants"] = [{"id": "shower", "area": 2.0}, {"id": "wc", "area": 1.0}]
+    points = {"bath": (1.0, 1.0), "store": (5, 3), "shower": (0.5, 0.5)}
+    out = json.loads(planner_callback(FixedSeedPlanner(points))(json.dumps(request)))
+    # descendants with a point are passed on; "wc" has none and grows with its ancestor's seed
+    assert out["descendant_seeds"] == {"shower": [0.5, 0.5]}
+    alone = json.loads(planner_callback(FixedSeedPlanner(points, descendants=False))(json.dumps(request)))
+    assert alone["descendant_seeds"] == {}
 
 
 def test_fixed_planner_without_parent_point() -> None:
@@ -72,6 +84,7 @@ def test_box_seeds_and_fractions_use_the_contract_shape() -> None:
             "store": {"point": [5.0, 3.0], "fraction": 0.2},
         },
         "parent_seed": None,
+        "descendant_seeds": {},
     }
 
 
@@ -114,3 +127,48 @@ def test_malformed_request_is_a_planner_error() -> None:
     callback = planner_callback(FixedSeedPlanner({}))
     with pytest.raises(PlannerError, match="malformed seed request"):
         callback('{"round": 1}')
+
+
+def _pantry_floor() -> tuple[dict[str, Any], dict[str, Any], dict[str, tuple[float, float]]]:
+    graph = {
+        "nodes": [
+            {"id": "hall", "type": "main", "area": 30.0},
+            {"id": "kitchen", "type": "Entities", "area": 30.0},
+            {"id": "pantry", "type": "Entities", "area": 10.0},
+            {"id": "study", "type": "Entities", "area": 10.0},
+        ],
+        "edges": [
+            {"source": "hall", "target": "kitchen"},
+            {"source": "kitchen", "target": "pantry"},
+            {"source": "hall", "target": "study"},
+        ],
+    }
+    footprint = {"polygon": [[0, 0], [10, 0], [10, 8], [0, 8]]}
+    points = {"hall": (3.0, 6.0), "kitchen": (7.5, 5.0), "pantry": (8.5, 1.0), "study": (2.0, 2.0)}
+    return graph, footprint, points
+
+
+def test_descendant_seeds_grow_a_child_region_from_every_room_it_will_hold() -> None:
+    from mansion import solve_floor
+
+    graph, footprint, points = _pantry_floor()
+    layout = solve_floor(graph, footprint, seed_planner=FixedSeedPlanner(points), rng_seed=3)
+    assert [r.parent for r in layout.diagnostics.rounds] == ["hall", "kitchen"]
+    # the pantry, placed through the kitchen's round, ends up near its own point
+    pantry = layout.room("pantry")
+    assert abs(pantry.centroid[0] - 8.5) < 2.0 and abs(pantry.centroid[1] - 1.0) < 2.0
+    assert layout.adjacency("kitchen", "pantry") is not None
+    assert sum(r.area for r in layout.rooms) == pytest.approx(80.0)
+
+
+def test_a_descendant_seed_for_a_room_no_child_holds_is_a_planner_error() -> None:
+    from mansion import solve_floor
+
+    graph, footprint, points = _pantry_floor()
+
+    def plan(request: SeedRequest) -> SeedPlan:
+        base = FixedSeedPlanner(points).plan(request)
+        return base.model_copy(update={"descendant_seeds": {"study": (1.0, 1.0)}})
+
+    with pytest.raises(PlannerError, match="descendant seed for 'study'"):
+        solve_floor(graph, footprint, seed_planner=plan)

@@ -22,9 +22,9 @@ def test_default_options_match_the_binding_contract() -> None:
         "min_contact": 1.0,
         "hierarchical": True,
         "rng_seed": 0,
-        "weights": {"ratio": 6.0, "seed": 0.2, "drift": 0.0, "wall": 0.8, "corner": 3.0},
-        "k": 8.0,
-        "gammas": [1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0],
+        "weights": {"ratio": 1.28, "seed": 0.21, "drift": 17.65, "wall": 0.57, "corner": 0.29},
+        "k": 4.0,
+        "gammas": [0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0],
         "seed_separation": 2.0,
         "fallback_samples": 400,
         "min_width": None,
@@ -39,7 +39,7 @@ def test_options_take_models_and_dicts() -> None:
         rng_seed=2**64 - 1,
         hierarchical=False,
     )
-    assert opts["weights"] == {"ratio": 6.0, "seed": 0.2, "drift": 0.0, "wall": 0.0, "corner": 3.0}
+    assert opts["weights"] == {"ratio": 1.28, "seed": 0.21, "drift": 17.65, "wall": 0.0, "corner": 0.29}
     assert opts["k"] == 2.0 and opts["gammas"] == [1.0, 2.0] and opts["min_width"] == 2
     assert opts["hierarchical"] is False
     assert build_options(weights=EnergyWeights(ratio=1.0))["weights"]["ratio"] == 1.0

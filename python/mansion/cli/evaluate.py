@@ -98,6 +98,7 @@ def tune_weights(
     data: DataOption,
     out: Annotated[Path, typer.Option("--out", "-o", help="Where to write the best weights (JSON).")] = Path("weights.json"),
     samples: Annotated[int, typer.Option(help="Random weight vectors to try.")] = 40,
+    refine: Annotated[int, typer.Option(help="Local perturbations of the best, after the samples.")] = 20,
     seed: Annotated[int, typer.Option(help="Seed of the search.")] = 0,
     mode: Annotated[ModeChoice, typer.Option(help="Solver mode to tune for.")] = ModeChoice.hierarchical,
     report: Annotated[Optional[Path], typer.Option(help="Write every trial as JSON.")] = None,
@@ -118,7 +119,7 @@ def tune_weights(
         )
 
     try:
-        result = run(data, samples=samples, seed=seed, mode=mode.value, workers=workers, on_trial=show)
+        result = run(data, samples=samples, refine=refine, seed=seed, mode=mode.value, workers=workers, on_trial=show)
         result.best.save(out)
         if report is not None:
             result.save(report)
