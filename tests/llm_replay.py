@@ -31,6 +31,7 @@ _AGENTS = {
     "program a complete multi-floor building": "program",
     "abstract topological connectivity": "topology",
     "seed planning assistant": "seed",
+    "You are a floor plan reader": "t2d",
 }
 
 
@@ -61,6 +62,10 @@ class Replay:
             m = re.search(r"Floor index (\d+)", first)
             assert m, "the topology prompt names its floor"
             return f"topology_floor{m.group(1)}"
+        if agent == "t2d":
+            m = re.search(r"Plan (\S+)\.", first)
+            assert m, "the test descriptions name their plan"
+            return f"t2d_{m.group(1)}"
         if agent == "seed":
             m = re.search(r"Parent room ID: (\S+),", first)
             assert m, "the seed prompt names its parent"

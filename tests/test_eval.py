@@ -175,3 +175,55 @@ def test_cli_eval_on_a_missing_folder_fails_cleanly(tmp_path: Path) -> None:
     res = CliRunner().invoke(app, ["eval", "floorplan", "--data", str(tmp_path / "nope")])
     assert res.exit_code == 2
     assert "no T2D plans" in res.output
+
+
+# -- seeds from the description (the paper's end-to-end setting), replayed through the SDK ------
+
+
+def test_text_seeds_from_recorded_answers(plans_dir: Path) -> None:
+    from llm_replay import Replay, message
+
+    from mansion.agents.llm import LLMClient
+    from mansion.eval.t2d import iter_plans
+
+    overrides = {}
+    for pid, plan in iter_plans(plans_dir, ["0", "1"]):
+        (plans_dir / "text").mkdir(exist_ok=True)
+        (plans_dir / "text" / f"{pid}.txt").write_text(f"Plan {pid}. The living room is in the middle.")
+        # the model's answer: each room's true centre, nudged by half a cell (mask frame, y down)
+        points = {f"{r.type}_{r.id}": (r.centroid[0] / 4 + 0.5, r.centroid[1] / 4 - 0.5) for r in plan.rooms}
+        answer = {"rooms": [{"id": k, "x": x, "y": y, "reason": "from the text"} for k, (x, y) in points.items()]}
+        overrides[f"t2d_{pid}"] = message(json.dumps(answer))
+    # plan 1's first answer puts a room outside the interior: it is sent back with the problem
+    bad = json.loads(overrides["t2d_1"]["content"][0]["text"])
+    bad["rooms"][0]["x"], bad["rooms"][0]["y"] = 0.5, 0.5
+    overrides["t2d_1.attempt1"] = message(json.dumps(bad))
+    replay = Replay(overrides=overrides)
+    report = evaluate_floorplans(
+        plans_dir, ids=["0", "1"], seeds="anthropic", client=LLMClient(replay.client()), workers=1
+    )
+    assert report.failures == 0 and report.seeds == "anthropic"
+    assert report.micro > 75
+    assert replay.served == ["t2d_0", "t2d_1.attempt1", "t2d_1"]
+    retry = replay.requests[2]["messages"][-1]["content"]
+    assert "is not on a '#' cell" in (retry if isinstance(retry, str) else json.dumps(retry))
+    # the seeds the solver used are in the report, in the solver's frame (y up)
+    first = report.per_plan[0].seeds
+    assert first is not None and set(first) == {n.id for n in protocol_inputs(next(iter_plans(plans_dir, ["0"]))[1]).graph.nodes}
+
+
+def test_text_seeds_that_never_validate_fail_that_plan_only(plans_dir: Path) -> None:
+    from llm_replay import Replay, message
+
+    from mansion.agents.llm import LLMClient
+
+    for pid in ("2", "3"):
+        (plans_dir / "text").mkdir(exist_ok=True)
+        (plans_dir / "text" / f"{pid}.txt").write_text(f"Plan {pid}. Two bedrooms.")
+    replay = Replay(overrides={"t2d_2": message('{"rooms": [{"id": "nobody", "x": 1, "y": 1}]}'),
+                               "t2d_3": message("not json at all")})
+    report = evaluate_floorplans(
+        plans_dir, ids=["2", "3"], seeds="anthropic", client=LLMClient(replay.client(), attempts=2), workers=1
+    )
+    assert report.failures == 2 and report.micro == 0.0
+    assert all("seed planning failed" in (p.error or "") for p in report.per_plan)

@@ -102,7 +102,7 @@ class LLMClient:
             if not key:
                 raise PlannerError(
                     "the anthropic planner needs an API key: set ANTHROPIC_API_KEY "
-                    "(or use --planner offline, which needs none)"
+                    "(or use the offline planner or ground-truth seeds, which need none)"
                 )
             try:
                 import anthropic

@@ -23,6 +23,7 @@ PROMPTS = {
     "building_program": "building_program.md",
     "floor_topology": "floor_topology.md",
     "seed_planner": "seed_planner.md",
+    "t2d_seeds": "t2d_seeds.md",
 }
 
 _SPLIT = "=== user ==="

@@ -22,6 +22,11 @@ class ModeChoice(str, Enum):
     flat = "flat"
 
 
+class SeedChoice(str, Enum):
+    ground_truth = "ground-truth"
+    anthropic = "anthropic"
+
+
 def _progress(console: Console) -> Progress:
     return Progress(
         TextColumn("[bold]{task.description}"),
@@ -53,6 +58,13 @@ def eval_floorplan(
     weights: WeightsOption = None,
     seed: Annotated[int, typer.Option(help="Solver random seed.")] = 0,
     workers: Annotated[Optional[int], typer.Option(help="Processes (default: all cores).")] = None,
+    planner: Annotated[
+        SeedChoice,
+        typer.Option(
+            help="Seeds: the ground-truth centroids (MA protocol), or Claude reading "
+            "DIR/text/<id>.txt (needs ANTHROPIC_API_KEY)."
+        ),
+    ] = SeedChoice.ground_truth,
 ) -> None:
     """Reproduce real floor plans under the paper's MA protocol and print micro/macro IoU."""
     from mansion.eval.floorplan import evaluate_floorplans, write_gallery
@@ -71,6 +83,7 @@ def eval_floorplan(
                 rng_seed=seed,
                 workers=workers,
                 progress=lambda done, total: bar.update(task, completed=done, total=total),
+                seeds="anthropic" if planner is SeedChoice.anthropic else "ground_truth",
             )
         if json_out is not None:
             report.save(json_out)

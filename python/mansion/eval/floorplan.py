@@ -14,19 +14,25 @@ import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 from pydantic import BaseModel, Field
 
 from mansion._io import atomic_write_text
-from mansion.exceptions import InvalidInputError, MansionError
-from mansion.floorplan import EnergyWeights, FixedSeedPlanner, SeedPlanner, SolverSettings, solve_floor
+from mansion.exceptions import InvalidInputError, MansionError, PlannerError
+from mansion.floorplan import EnergyWeights, FixedSeedPlanner, SolverSettings, solve_floor
 from mansion.eval.iou import plan_iou
 from mansion.eval.t2d import CELL_SIZE, T2DPlan, iter_plans, plan_ids, protocol_inputs, solver_to_mask
+
+if TYPE_CHECKING:
+    from mansion.agents.llm import LLMClient
 
 __all__ = ["EvalReport", "PlanResult", "evaluate_floorplans", "solve_plan"]
 
 Mode = Literal["hierarchical", "flat"]
+#: Where the seeds come from: the protocol's ground-truth centroids (MA), or Claude reading the
+#: plan's description (the paper's end-to-end setting).
+SeedSource = Literal["ground_truth", "anthropic"]
 
 
 class PlanResult(BaseModel):
@@ -41,6 +47,8 @@ class PlanResult(BaseModel):
     backtracks: int = 0
     rooms: int
     seconds: float
+    #: The seeds the solver used when they did not come from the ground truth (solver frame).
+    seeds: dict[str, tuple[float, float]] | None = None
 
 
 class EvalReport(BaseModel):
@@ -53,6 +61,7 @@ class EvalReport(BaseModel):
     fallbacks: int = Field(description="Plans where the Monte Carlo fallback won a round.")
     seconds: float
     mode: Mode
+    seeds: SeedSource = "ground_truth"
     rng_seed: int = 0
     weights: EnergyWeights
     settings: SolverSettings
@@ -77,15 +86,16 @@ def solve_plan(
     weights: EnergyWeights | None = None,
     settings: SolverSettings | None = None,
     rng_seed: int = 0,
-    planner: SeedPlanner | None = None,
+    seeds: dict[str, tuple[float, float]] | None = None,
 ) -> Any:
     """Solve one plan under the protocol; returns the predicted 64×64 class map (row 0 = top)
-    and the layout. Raises :class:`MansionError` when the solver fails."""
+    and the layout. ``seeds`` (node id → solver-frame point) replace the ground-truth centroids.
+    Raises :class:`MansionError` when the solver fails."""
     inputs = protocol_inputs(plan)
     layout = solve_floor(
         inputs.graph,
         inputs.footprint,
-        seed_planner=planner if planner is not None else FixedSeedPlanner(inputs.seeds),
+        seed_planner=FixedSeedPlanner(inputs.seeds if seeds is None else seeds),
         weights=weights,
         settings=settings,
         cell_size=CELL_SIZE,
@@ -97,14 +107,19 @@ def solve_plan(
     return solver_to_mask(layout.grid, inputs.classes), layout
 
 
-def _score_one(
-    job: tuple[str, str, Mode, EnergyWeights, SolverSettings, int],
-) -> tuple[PlanResult, Any]:
-    pid, path, mode, weights, settings, rng_seed = job
+Job = tuple[str, str, Mode, EnergyWeights, SolverSettings, int, "dict[str, tuple[float, float]] | str | None"]
+
+
+def _score_one(job: Job) -> tuple[PlanResult, Any]:
+    pid, path, mode, weights, settings, rng_seed, seeds = job
     t0 = time.perf_counter()
     plan = T2DPlan.load(path)
     try:
-        pred, layout = solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed)
+        if isinstance(seeds, str):  # the seed planner failed on this plan: a failure, scored 0
+            raise MansionError(seeds)
+        pred, layout = solve_plan(
+            plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=seeds
+        )
     except MansionError as exc:
         return (
             PlanResult(
@@ -123,6 +138,7 @@ def _score_one(
         backtracks=layout.diagnostics.backtracks,
         rooms=len(plan.rooms),
         seconds=time.perf_counter() - t0,
+        seeds=seeds,
     )
     return result, pred
 
@@ -138,12 +154,17 @@ def evaluate_floorplans(
     rng_seed: int = 0,
     workers: int | None = None,
     progress: Callable[[int, int], None] | None = None,
+    seeds: SeedSource = "ground_truth",
+    client: LLMClient | None = None,
 ) -> EvalReport:
     """Solve and score the plans of ``data`` (``DIR/plans/<id>.json``).
 
     ``ids`` picks plans (default: all, in id order), ``limit`` keeps the first N of them.
     ``workers`` processes solve plans side by side (default: the machine's cores); the result does
     not depend on it. ``progress(done, total)`` is called after each plan.
+    ``seeds="anthropic"`` has Claude place the seeds from ``DIR/text/<id>.txt`` first (one request
+    per plan, through ``client``, default an :class:`LLMClient` from the environment); a plan whose
+    seeds cannot be planned counts as a failure.
     """
     if mode not in ("hierarchical", "flat"):
         raise InvalidInputError(f"mode must be 'hierarchical' or 'flat', got {mode!r}")
@@ -157,7 +178,14 @@ def evaluate_floorplans(
     if not chosen:
         raise InvalidInputError(f"no plans to evaluate in {str(data)!r}")
     folder = Path(data) / "plans" if (Path(data) / "plans").is_dir() else Path(data)
-    jobs = [(pid, str(folder / f"{pid}.json"), mode, w, s, rng_seed) for pid in chosen]
+    planned: dict[str, dict[str, tuple[float, float]] | str | None] = dict.fromkeys(chosen)
+    if seeds == "anthropic":
+        planned.update(_text_seeds(Path(data), folder, chosen, client))
+    elif seeds != "ground_truth":
+        raise InvalidInputError(f"seeds must be 'ground_truth' or 'anthropic', got {seeds!r}")
+    jobs: list[Job] = [
+        (pid, str(folder / f"{pid}.json"), mode, w, s, rng_seed, planned[pid]) for pid in chosen
+    ]
     n_workers = max(1, os.cpu_count() or 1) if workers is None else max(1, workers)
 
     t0 = time.perf_counter()
@@ -187,11 +215,34 @@ def evaluate_floorplans(
         fallbacks=sum(r.fallback for r in results),
         seconds=seconds,
         mode=mode,
+        seeds=seeds,
         rng_seed=rng_seed,
         weights=w,
         settings=s,
         per_plan=results,
     )
+
+
+def _text_seeds(
+    data: Path, folder: Path, ids: list[str], client: LLMClient | None
+) -> dict[str, dict[str, tuple[float, float]] | str]:
+    """Claude's seeds for each plan, or the error message when it could not give valid ones."""
+    from mansion.agents.llm import LLMClient as Client
+    from mansion.eval.text_seeds import plan_text_seeds
+
+    llm = client if client is not None else Client()
+    out: dict[str, dict[str, tuple[float, float]] | str] = {}
+    for pid in ids:
+        text_path = data / "text" / f"{pid}.txt"
+        try:
+            description = text_path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise InvalidInputError(f"no description for plan {pid}: {text_path} ({exc.strerror})") from exc
+        try:
+            out[pid] = plan_text_seeds(llm, T2DPlan.load(folder / f"{pid}.json"), description)
+        except PlannerError as exc:
+            out[pid] = f"seed planning failed: {exc}"
+    return out
 
 
 def write_gallery(
@@ -219,7 +270,7 @@ def write_gallery(
             else:
                 pred, _ = solve_plan(
                     plan, mode=report.mode, weights=report.weights, settings=report.settings,
-                    rng_seed=report.rng_seed,
+                    rng_seed=report.rng_seed, seeds=r.seeds,
                 )
             title = f"{tag} {rank}: plan {r.id} — micro {r.micro:.1f}, macro {r.macro:.1f}"
             if r.failed:
