@@ -22,12 +22,12 @@ from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError, MansionError, PlannerError
 from mansion.floorplan import EnergyWeights, FixedSeedPlanner, SolverSettings, solve_floor
 from mansion.eval.iou import plan_iou
-from mansion.eval.t2d import CELL_SIZE, T2DPlan, iter_plans, plan_ids, protocol_inputs, solver_to_mask
+from mansion.eval.t2d import CELL_SIZE, GRID, T2DPlan, iter_plans, plan_ids, protocol_inputs, solver_to_mask
 
 if TYPE_CHECKING:
     from mansion.agents.llm import LLMClient
 
-__all__ = ["EvalReport", "PlanResult", "evaluate_floorplans", "solve_plan"]
+__all__ = ["EvalReport", "PlanResult", "evaluate_floorplans", "solve_plan", "write_gallery"]
 
 Mode = Literal["hierarchical", "flat"]
 #: Where the seeds come from: the protocol's ground-truth centroids (MA), or Claude reading the
@@ -266,7 +266,7 @@ def write_gallery(
             if r.failed:
                 import numpy as np
 
-                pred = np.zeros((64, 64), dtype=np.int32)
+                pred = np.zeros((GRID, GRID), dtype=np.int32)
             else:
                 pred, _ = solve_plan(
                     plan, mode=report.mode, weights=report.weights, settings=report.settings,
