@@ -341,3 +341,8 @@ def test_cli_render_and_schema(tmp_path: Path) -> None:
     result = runner.invoke(app, ["schema", "--out", str(tmp_path / "schema.json")])
     assert result.exit_code == 0, result.output
     assert json.loads((tmp_path / "schema.json").read_text())["properties"]["rooms"]
+
+
+def test_committed_json_schema_is_current() -> None:
+    committed = Path(__file__).resolve().parents[1] / "docs" / "house.schema.json"
+    assert json.loads(committed.read_text()) == house_json_schema(), "run: mansion schema --out docs/house.schema.json"
