@@ -130,7 +130,7 @@ class _WallBuilder:
             t = g.t1
         if f.length > t + 1e-6:
             cuts.append((t, f.length, None))
-        for t0, t1, g in cuts:
+        for t0, t1, hole in cuts:
             p0, p1 = f.at(t0), f.at(t1)
             right = self._id(f.room)
             self.walls.append(_wall(right, f.room, p0, p1, self.height, self.materials[f.room], empty))
@@ -142,8 +142,8 @@ class _WallBuilder:
             else:
                 left = self._id(f.room, exterior=True)
                 self.walls.append(_wall(left, f.room, p1, p0, self.height, self.facade, empty))
-            if g is not None:
-                self._hole(g, f, t0, right, left)
+            if hole is not None:
+                self._hole(hole, f, t0, right, left)
 
     def _hole(self, g: Feature, f: Interface, t0: float, wall0: str, wall1: str) -> None:
         lo = Vec3(x=g.x0 - t0, y=g.y0, z=0.0)
@@ -249,7 +249,7 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
         rooms=rooms, walls=builder.walls, doors=builder.doors, windows=builder.windows,
         objects=[],
         metadata=HouseMetadata(
-            schema_version=HOUSE_SCHEMA,
+            schema=HOUSE_SCHEMA,
             agent_poses={mode: spawn for mode in AGENT_MODES},
             mansion=FloorRecord(
                 building=building_id(building), floor=floor.index,

@@ -137,8 +137,10 @@ class _HouseCheck:
     def ids(self) -> None:
         seen: dict[str, str] = {}
         h = self.house
-        groups = {"room": h.rooms, "wall": h.walls, "door": h.doors, "window": h.windows,
-                  "object": h.objects}
+        groups: dict[str, list[Any]] = {
+            "room": h.rooms, "wall": h.walls, "door": h.doors, "window": h.windows,
+            "object": h.objects,
+        }
         for kind, items in groups.items():
             for item in items:
                 if item.id in seen:
@@ -229,9 +231,9 @@ class _HouseCheck:
             lines: dict[Any, list[tuple[float, float]]] = defaultdict(list)
             for s in segs:
                 if abs(s.p0[1] - s.p1[1]) < EPS:
-                    lines[("z", round(s.p0[1], 4))].append(tuple(sorted((s.p0[0], s.p1[0]))))
+                    lines[("z", round(s.p0[1], 4))].append((min(s.p0[0], s.p1[0]), max(s.p0[0], s.p1[0])))
                 elif abs(s.p0[0] - s.p1[0]) < EPS:
-                    lines[("x", round(s.p0[0], 4))].append(tuple(sorted((s.p0[1], s.p1[1]))))
+                    lines[("x", round(s.p0[0], 4))].append((min(s.p0[1], s.p1[1]), max(s.p0[1], s.p1[1])))
             for spans in lines.values():
                 spans.sort()
                 for (a0, a1), (b0, b1) in zip(spans, spans[1:]):
