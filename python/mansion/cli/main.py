@@ -121,8 +121,11 @@ def generate(
     footprint: Annotated[Optional[Path], typer.Option(help="Footprint JSON whose outline every floor uses.")] = None,
     planner: Annotated[PlannerName, typer.Option(help="Who plans the building.")] = PlannerName.offline,
     seed: Annotated[int, typer.Option(help="Random seed; the same seed and inputs give the same building.")] = 0,
+    scenes: Annotated[bool, typer.Option("--scenes/--no-scenes", help="Write AI2-THOR scenes (DIR/scenes/).")] = True,
+    render: Annotated[bool, typer.Option("--render/--no-render", help="Draw the scenes (DIR/scenes/floor_<k>.png).")] = True,
 ) -> None:
-    """Generate a multi-floor building: DIR/building.json, DIR/floor_<k>.png, DIR/overview.png."""
+    """Generate a multi-floor building: DIR/building.json, DIR/floor_<k>.png, DIR/overview.png,
+    and its AI2-THOR scenes: DIR/scenes/floor_<k>.json, DIR/scenes/manifest.json and their pictures."""
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
     from mansion.building import generate_building, plot_building, plot_floors
@@ -147,6 +150,17 @@ def generate(
             json_path = building.to_json(out / "building.json")
             pictures = plot_floors(building, out)
             overview = plot_building(building, out / "overview.png")
+            manifest = None
+            if scenes:
+                from mansion.scene import write_scenes
+
+                bar.update(task, description="writing scenes…")
+                manifest = write_scenes(building, out / "scenes")
+                if render:
+                    from mansion.scene.render import render_folder
+
+                    bar.update(task, description="drawing scenes…")
+                    render_folder(manifest.parent)
     except MansionError as exc:
         raise _fail(str(exc)) from None
     except OSError as exc:
@@ -173,6 +187,62 @@ def generate(
     console.print(table)
     console.print(f"Generated in {seconds:.2f} s (palette: {escape(building.palette.name)}).")
     console.print(f"Wrote {escape(str(json_path))}, {len(pictures)} floor pictures and {escape(str(overview))}")
+    if manifest is not None:
+        console.print(f"Scenes: {escape(str(manifest.parent))}/floor_<k>.json and {escape(str(manifest))}")
+
+
+@app.command()
+def validate(
+    path: Annotated[Path, typer.Argument(help="A house JSON, a manifest.json, or a folder holding one (or scenes/manifest.json).")],
+) -> None:
+    """Check house JSONs (schema and geometry) or a whole building; exit 1 on any problem."""
+    from mansion.scene import validate_path
+
+    try:
+        problems = validate_path(path)
+    except MansionError as exc:
+        raise _fail(str(exc)) from None
+    console = Console()
+    for problem in problems:
+        console.print(escape(str(problem)), soft_wrap=True)
+    if problems:
+        console.print(f"[red]{len(problems)} problem(s)[/red]")
+        raise typer.Exit(code=1)
+    console.print(f"{escape(str(path))}: valid")
+
+
+@app.command()
+def render(
+    folder: Annotated[Path, typer.Argument(help="A building's output folder (with scenes/manifest.json), a scenes folder, or a folder of house JSONs.")],
+) -> None:
+    """Draw every floor top-down (rooms, walls, doors, windows, objects, spawn) to PNG."""
+    from mansion.scene.render import render_folder
+
+    try:
+        pictures = render_folder(folder)
+    except MansionError as exc:
+        raise _fail(str(exc)) from None
+    except OSError as exc:
+        raise _fail(f"cannot write to {str(folder)!r}: {exc.strerror or exc}") from None
+    for p in pictures:
+        Console().print(f"Wrote {escape(str(p))}")
+
+
+@app.command()
+def schema(
+    out: Annotated[Optional[Path], typer.Option("--out", "-o", help="Write the JSON Schema here instead of printing it.")] = None,
+) -> None:
+    """The JSON Schema of the AI2-THOR house format (schema 1.0.0) as mansion writes it."""
+    import json
+
+    from mansion._io import atomic_write_text
+    from mansion.scene import house_json_schema
+
+    text = json.dumps(house_json_schema(), indent=2) + "\n"
+    if out is None:
+        typer.echo(text, nl=False)
+    else:
+        atomic_write_text(out, text)
 
 
 @app.command()
