@@ -34,7 +34,7 @@ from mansion.building.load_bearing import (
     retarget_first_round,
 )
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError
-from mansion.floorplan import SeedPlanner, solve_floor
+from mansion.floorplan import EnergyWeights, SeedPlanner, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
 from mansion.models.building import Building, BuildingProgram, Floor, FloorCopy, Palette, RoomCard
 from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner, get_planner
@@ -129,6 +129,7 @@ def generate_building(
     retries: int = 10,
     batch: int = 100,
     min_contact: float = 1.0,
+    weights: EnergyWeights | None = None,
     progress: Progress | None = None,
 ) -> Building:
     """Generate a checked multi-floor building (plans only) from a plain-language description.
@@ -147,6 +148,12 @@ def generate_building(
         load_bearing: carry first-round walls up as fixed walls; None: the type's default (on
             for apartment blocks and offices).
         cell_size, retries, batch, min_contact: passed to :func:`mansion.solve_floor`.
+        weights: energy weights of every floor's solve; None: :meth:`EnergyWeights.paper`, not
+            the solver's T2D-tuned defaults. Those follow seeds closely, which pays when seeds are
+            true centroids; here seeds are the planner's guesses and room areas matter more.
+            Measured over the offline hundred (seeds 0–99): the paper's weights solve all 100
+            buildings, the T2D-tuned ones fail 2; mean room area error over seeds 0–39 is 17.2 %
+            against 19.8 %.
         progress: called as ``progress(message, done, total)`` as floors are solved.
 
     Raises:
@@ -164,7 +171,10 @@ def generate_building(
         floors=floors, area=area, outline=_footprint_outline(footprint),
         max_floor_area=max_floor_area, building_type=building_type, load_bearing=load_bearing,
     )
-    solver = {"cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact}
+    solver = {
+        "cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact,
+        "weights": weights if weights is not None else EnergyWeights.paper(),
+    }
     if not isinstance(plan, OfflinePlanner):
         # LLM planners wait on the network: the LangGraph pipeline fans the floors out. It is
         # imported only here so the offline path never loads langgraph.

@@ -47,6 +47,13 @@ class EnergyWeights(BaseModel):
     corner: float = Field(default=0.29, ge=0.0, description="Interior corners beyond four.")
 
     @classmethod
+    def paper(cls) -> EnergyWeights:
+        """The values released by the MANSION authors (ratio 6.0, seed 0.2, wall 0.8, corner 3.0,
+        no drift term): area first. The building generator uses them (see
+        :func:`mansion.generate_building`)."""
+        return cls(ratio=6.0, seed=0.2, drift=0.0, wall=0.8, corner=3.0)
+
+    @classmethod
     def load(cls, path: str | os.PathLike[str]) -> EnergyWeights:
         """Read weights from a JSON file; every problem is an :class:`InvalidInputError`."""
         return load_input(cls, path, "energy weights")
