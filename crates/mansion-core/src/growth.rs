@@ -39,9 +39,47 @@ fn within_cap(area: usize, add: usize, target: f64) -> bool {
     after <= target || after - target < target - area as f64
 }
 
-/// Pick an index among `active` rooms with probability proportional to their target area.
-fn pick_weighted<R: Rng>(rng: &mut R, growers: &[Grower], active: &[usize]) -> usize {
-    let total: f64 = active.iter().map(|&k| growers[k].target.max(1.0)).sum();
+/// The rooms still growing in a phase, drawn with probability proportional to their target area.
+#[derive(Default)]
+struct Active {
+    list: Vec<usize>,
+    /// The sum of the listed rooms' weights, in list order; `None` once the list has changed.
+    total: Option<f64>,
+}
+
+impl Active {
+    /// List the growers still short of their targets.
+    fn reset(&mut self, growers: &[Grower], area: &[usize]) {
+        self.list.clear();
+        self.list
+            .extend((0..growers.len()).filter(|&k| (area[k] as f64) < growers[k].target));
+        self.total = None;
+    }
+
+    fn is_empty(&self) -> bool {
+        self.list.is_empty()
+    }
+
+    /// Drop the room at position `pos` (the list's order changes as in `Vec::swap_remove`).
+    fn remove(&mut self, pos: usize) {
+        self.list.swap_remove(pos);
+        self.total = None;
+    }
+
+    /// Pick a position in the list with probability proportional to target area. The total is
+    /// summed afresh (in list order, so exactly as before) only after the list has changed.
+    fn pick<R: Rng>(&mut self, rng: &mut R, growers: &[Grower]) -> usize {
+        let list = &self.list;
+        let total = *self
+            .total
+            .get_or_insert_with(|| list.iter().map(|&k| growers[k].target.max(1.0)).sum());
+        pick_weighted(rng, growers, list, total)
+    }
+}
+
+/// Pick an index among `active` rooms with probability proportional to their target area, given
+/// the sum of their weights.
+fn pick_weighted<R: Rng>(rng: &mut R, growers: &[Grower], active: &[usize], total: f64) -> usize {
     let mut u = rng.random::<f64>() * total;
     for (pos, &k) in active.iter().enumerate() {
         u -= growers[k].target.max(1.0);
@@ -106,6 +144,24 @@ impl Bits {
         span(line, a, b, on, &mut self.rows, self.wr, x);
     }
 
+    /// Clear every bit.
+    fn clear_all(&mut self) {
+        self.rows.fill(0);
+        self.cols.fill(0);
+    }
+
+    /// Set the cells of the rectangle `x0..=x1` × `y0..=y1`: a few words per row and per column.
+    fn fill_rect(&mut self, x0: usize, y0: usize, x1: usize, y1: usize) {
+        for y in y0..=y1 {
+            let line = &mut self.rows[y * self.wr..(y + 1) * self.wr];
+            set_words(line, x0, x1);
+        }
+        for x in x0..=x1 {
+            let line = &mut self.cols[x * self.wc..(x + 1) * self.wc];
+            set_words(line, y0, y1);
+        }
+    }
+
     #[inline]
     fn row(&self, y: usize) -> &[u64] {
         &self.rows[y * self.wr..(y + 1) * self.wr]
@@ -123,6 +179,14 @@ fn word_mask(i: usize, a: usize, b: usize) -> u64 {
     let lo = a.max(i * 64) - i * 64;
     let hi = b.min(i * 64 + 63) - i * 64;
     (u64::MAX >> (63 - hi)) & (u64::MAX << lo)
+}
+
+/// Set bits `a..=b` of one line.
+#[inline]
+fn set_words(line: &mut [u64], a: usize, b: usize) {
+    for (i, word) in line.iter_mut().enumerate().take(b / 64 + 1).skip(a / 64) {
+        *word |= word_mask(i, a, b);
+    }
 }
 
 /// Set or clear bits `a..=b` of one line, a few words at a time, and bit `at` of each crossing
@@ -264,8 +328,9 @@ pub struct GrowScratch {
     rooms: Vec<Bits>,
     area: Vec<usize>,
     bbox: Vec<(usize, usize, usize, usize)>,
-    active: Vec<usize>,
-    sides: Vec<(usize, u8)>,
+    active: Active,
+    /// Per room, the sides (bit `side`) not yet found shut in the rectangular phase.
+    live: Vec<u8>,
     runs: RunScratch,
 }
 
@@ -306,28 +371,34 @@ pub fn grow_in<'s, R: Rng>(
     s.area.resize(n, 1);
     let area = &mut s.area;
     // Inclusive bounding boxes (x0, y0, x1, y1). During the rectangular phase they are the rooms,
-    // so the rooms' own bits are only written once that phase is over.
+    // and only the free bits are kept up to date: the grid's cells and the rooms' own bits are
+    // written once that phase is over.
     s.bbox.clear();
     s.bbox
         .extend(seeds.iter().map(|&c| (c % w, c / w, c % w, c / w)));
     let bbox = &mut s.bbox;
-    for k in 0..n {
-        let (x, y, _, _) = bbox[k];
+    for &(x, y, _, _) in bbox.iter() {
         debug_assert_eq!(grid.cells[y * w + x], EMPTY);
-        grid.cells[y * w + x] = growers[k].label;
         free.row_span(y, x, x, false);
     }
 
-    // --- rectangular growth: add a whole free line beside one side, longest side first ---
+    // --- rectangular growth: add a whole free line beside one side ---
     let active = &mut s.active;
-    active.clear();
-    active.extend((0..n).filter(|&k| (area[k] as f64) < growers[k].target));
-    let sides = &mut s.sides;
+    active.reset(growers, area);
+    // A side found shut (or over the cap) stays so for the rest of the phase: cells only ever
+    // get taken, walls stay, the room's steps on other sides only lengthen the line beside it (a
+    // superset of the cells and walls tested) and the cap only tightens as the room and the line
+    // grow. So each room keeps a mask of the sides still worth testing.
+    s.live.clear();
+    s.live.resize(n, 0b1111);
+    let live = &mut s.live;
     while !active.is_empty() {
-        let pos = pick_weighted(rng, growers, active);
-        let k = active[pos];
+        let pos = active.pick(rng, growers);
+        let k = active.list[pos];
         let (x0, y0, x1, y1) = bbox[k];
-        sides.clear();
+        // open sides as (length, side), in the order tested
+        let mut sides = [(0usize, 0u8); 4];
+        let mut n_open = 0;
         // Under the longest-side rule only the longest open sides can be chosen, so the shorter
         // pair of sides is tested only when neither of the longer pair is open; `sides` keeps the
         // order 0..4 within a length. The balanced rule weighs every open side.
@@ -338,20 +409,23 @@ pub fn grow_in<'s, R: Rng>(
             [0, 1, 2, 3]
         };
         for (tested, &side) in order.iter().enumerate() {
-            if rule == GrowthRule::Longest && tested == 2 && tall != wide && !sides.is_empty() {
+            if rule == GrowthRule::Longest && tested == 2 && tall != wide && n_open > 0 {
                 break;
+            }
+            if live[k] & 1 << side == 0 {
+                continue;
             }
             // side 0: left, 1: right, 2: down, 3: up
             let (len, ok) = match side {
                 0 => (
-                    y1 - y0 + 1,
+                    tall,
                     all_set(free.col(x0 - 1), y0, y1)
                         && wb.is_none_or(|b| {
                             none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)
                         }),
                 ),
                 1 => (
-                    y1 - y0 + 1,
+                    tall,
                     all_set(free.col(x1 + 1), y0, y1)
                         && wb.is_none_or(|b| {
                             none_set(b.v.col(x1 + 1), y0, y1)
@@ -359,14 +433,14 @@ pub fn grow_in<'s, R: Rng>(
                         }),
                 ),
                 2 => (
-                    x1 - x0 + 1,
+                    wide,
                     all_set(free.row(y0 - 1), x0, x1)
                         && wb.is_none_or(|b| {
                             none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)
                         }),
                 ),
                 _ => (
-                    x1 - x0 + 1,
+                    wide,
                     all_set(free.row(y1 + 1), x0, x1)
                         && wb.is_none_or(|b| {
                             none_set(b.h.row(y1 + 1), x0, x1)
@@ -375,11 +449,14 @@ pub fn grow_in<'s, R: Rng>(
                 ),
             };
             if ok && within_cap(area[k], len, growers[k].target) {
-                sides.push((len, side));
+                sides[n_open] = (len, side);
+                n_open += 1;
+            } else {
+                live[k] &= !(1 << side);
             }
         }
-        if sides.is_empty() {
-            active.swap_remove(pos);
+        if n_open == 0 {
+            active.remove(pos);
             continue;
         }
         if rule == GrowthRule::Balanced {
@@ -399,11 +476,23 @@ pub fn grow_in<'s, R: Rng>(
             };
             // Among equally centred sides, prefer an axis still open at both ends: a step that
             // cannot be balanced by its opposite side later pulls the room off its seed for good.
-            let open = sides.iter().fold(0u8, |m, s| m | 1 << s.1);
+            let open = sides[..n_open].iter().fold(0u8, |m, s| m | 1 << s.1);
             let key = |side: u8| (off(side), u8::from(open & 1 << (side ^ 1) == 0));
-            let closest = sides.iter().map(|s| key(s.1)).min().unwrap_or((0, 0));
-            sides.retain(|s| key(s.1) == closest);
+            let mut keys = [(0i64, 0u8); 4];
+            for (key_i, s) in keys.iter_mut().zip(&sides[..n_open]) {
+                *key_i = key(s.1);
+            }
+            let closest = keys[..n_open].iter().copied().min().unwrap_or((0, 0));
+            let mut kept = 0;
+            for i in 0..n_open {
+                if keys[i] == closest {
+                    sides[kept] = sides[i];
+                    kept += 1;
+                }
+            }
+            n_open = kept;
         }
+        let sides = &sides[..n_open];
         let best = sides.iter().map(|s| s.0).max().unwrap_or(0);
         let n_ties = sides.iter().filter(|s| s.0 == best).count();
         let pick = if n_ties > 1 {
@@ -416,42 +505,41 @@ pub fn grow_in<'s, R: Rng>(
             .filter(|s| s.0 == best)
             .nth(pick)
             .map_or(0, |s| s.1);
-        let label = growers[k].label;
         match side {
             0 | 1 => {
                 let x = if side == 0 { x0 - 1 } else { x1 + 1 };
-                take_col(grid, free, x, y0, y1, label);
+                free.col_span(x, y0, y1, false);
                 bbox[k] = (x0.min(x), y0, x1.max(x), y1);
             }
             _ => {
                 let y = if side == 2 { y0 - 1 } else { y1 + 1 };
-                take_row(grid, free, y, x0, x1, label);
+                free.row_span(y, x0, x1, false);
                 bbox[k] = (x0, y0.min(y), x1, y1.max(y));
             }
         }
         area[k] += best;
         if area[k] as f64 >= growers[k].target {
-            active.swap_remove(pos);
+            active.remove(pos);
         }
+    }
+    // the rectangles into the grid, and into the rooms' own bits for the L-shaped phase
+    s.rooms.resize_with(n, Bits::default);
+    for ((room, &(x0, y0, x1, y1)), g) in s.rooms.iter_mut().zip(bbox.iter()).zip(growers) {
+        for y in y0..=y1 {
+            grid.cells[y * w + x0..=y * w + x1].fill(g.label);
+        }
+        room.clone_from(&field.free);
+        room.clear_all();
+        room.fill_rect(x0, y0, x1, y1);
     }
 
     // --- L-shaped growth: extend by the longest run of free cells beside the room's own cells ---
-    s.rooms.resize_with(n, Bits::default);
-    for (room, &(x0, y0, x1, y1)) in s.rooms.iter_mut().zip(bbox.iter()) {
-        room.clone_from(&field.free);
-        room.rows.fill(0);
-        room.cols.fill(0);
-        for y in y0..=y1 {
-            room.row_span(y, x0, x1, true);
-        }
-    }
-    active.clear();
-    active.extend((0..n).filter(|&k| (area[k] as f64) < growers[k].target));
+    active.reset(growers, area);
     s.runs.f.resize(free.wr.max(free.wc), 0);
     s.runs.zeros.resize(free.wr.max(free.wc), 0);
     while !active.is_empty() {
-        let pos = pick_weighted(rng, growers, active);
-        let k = active[pos];
+        let pos = active.pick(rng, growers);
+        let k = active.list[pos];
         let label = growers[k].label;
         let room = &mut s.rooms[k];
         match best_run(
@@ -482,11 +570,11 @@ pub fn grow_in<'s, R: Rng>(
                 let (x0, y0, x1, y1) = bbox[k];
                 bbox[k] = (x0.min(sx), y0.min(sy), x1.max(ex), y1.max(ey));
                 if area[k] as f64 >= growers[k].target {
-                    active.swap_remove(pos);
+                    active.remove(pos);
                 }
             }
             _ => {
-                active.swap_remove(pos);
+                active.remove(pos);
             }
         }
     }
@@ -1006,6 +1094,65 @@ mod tests {
                 }
             }
             assert!(spans.rows == cells.rows && spans.cols == cells.cols);
+        }
+    }
+
+    #[test]
+    fn rectangles_fill_rows_and_columns_alike() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(11);
+        for (w, h) in [(10, 7), (66, 66), (130, 70)] {
+            for _ in 0..200 {
+                let x0 = rng.random_range(0..w);
+                let x1 = rng.random_range(x0..w);
+                let y0 = rng.random_range(0..h);
+                let y1 = rng.random_range(y0..h);
+                let mut fast = Bits::new(w, h);
+                fast.rows.fill(u64::MAX);
+                fast.clear_all();
+                fast.fill_rect(x0, y0, x1, y1);
+                let mut slow = Bits::new(w, h);
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        slow.set(x, y);
+                    }
+                }
+                assert!(fast.rows == slow.rows && fast.cols == slow.cols);
+            }
+        }
+    }
+
+    #[test]
+    fn weighted_picks_with_a_kept_total_match_a_fresh_sum() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(13);
+        for case in 0..300 {
+            let n = rng.random_range(1..25);
+            let growers: Vec<Grower> = (0..n)
+                .map(|k| Grower {
+                    label: k as Label,
+                    target: rng.random::<f64>() * 300.0 + if case % 3 == 0 { 0.0 } else { 0.3 },
+                })
+                .collect();
+            let area = vec![0usize; n];
+            let mut active = Active::default();
+            active.reset(&growers, &area);
+            let mut list = active.list.clone();
+            let (mut fast, mut slow) = (
+                Xoshiro256PlusPlus::seed_from_u64(case),
+                Xoshiro256PlusPlus::seed_from_u64(case),
+            );
+            while !list.is_empty() {
+                let total: f64 = list.iter().map(|&k| growers[k].target.max(1.0)).sum();
+                let want = pick_weighted(&mut slow, &growers, &list, total);
+                let got = active.pick(&mut fast, &growers);
+                assert_eq!(got, want);
+                // drop the picked room now and then, as the growth loops do
+                if rng.random_range(0..4) == 0 {
+                    active.remove(got);
+                    list.swap_remove(want);
+                }
+                assert_eq!(active.list, list);
+            }
+            assert!(active.is_empty());
         }
     }
 
