@@ -184,8 +184,9 @@ fn word_mask(i: usize, a: usize, b: usize) -> u64 {
 /// Set bits `a..=b` of one line.
 #[inline]
 fn set_words(line: &mut [u64], a: usize, b: usize) {
-    for (i, word) in line.iter_mut().enumerate().take(b / 64 + 1).skip(a / 64) {
-        *word |= word_mask(i, a, b);
+    #[allow(clippy::needless_range_loop)]
+    for i in a / 64..=b / 64 {
+        line[i] |= word_mask(i, a, b);
     }
 }
 
@@ -201,17 +202,28 @@ fn span(
     stride: usize,
     at: usize,
 ) {
-    for (i, word) in line.iter_mut().enumerate().take(b / 64 + 1).skip(a / 64) {
+    // (an index loop: iterator chains here compiled to slower code, `skip`/`take` to calls of
+    // `Take::nth`)
+    #[allow(clippy::needless_range_loop)]
+    for i in a / 64..=b / 64 {
         let m = word_mask(i, a, b);
-        *word = if on { *word | m } else { *word & !m };
+        line[i] = if on { line[i] | m } else { line[i] & !m };
     }
+    // word `at / 64` of each crossing line `a..=b`
     let m = 1u64 << (at % 64);
-    for word in cross[a * stride + at / 64..]
-        .iter_mut()
-        .step_by(stride)
-        .take(b - a + 1)
-    {
-        *word = if on { *word | m } else { *word & !m };
+    let (first, last) = (a * stride + at / 64, b * stride + at / 64);
+    let cross = &mut cross[..=last];
+    let mut i = first;
+    if on {
+        while i <= last {
+            cross[i] |= m;
+            i += stride;
+        }
+    } else {
+        while i <= last {
+            cross[i] &= !m;
+            i += stride;
+        }
     }
 }
 
