@@ -343,6 +343,8 @@ pub struct GrowScratch {
     active: Active,
     /// Per room, the sides (bit `side`) not yet found shut in the rectangular phase.
     live: Vec<u8>,
+    /// Seed cells as (x, y).
+    seed_xy: Vec<(i64, i64)>,
     runs: RunScratch,
 }
 
@@ -404,105 +406,51 @@ pub fn grow_in<'s, R: Rng>(
     s.live.clear();
     s.live.resize(n, 0b1111);
     let live = &mut s.live;
+    s.seed_xy.clear();
+    s.seed_xy
+        .extend(seeds.iter().map(|&c| ((c % w) as i64, (c / w) as i64)));
+    let seed_xy = &s.seed_xy;
     while !active.is_empty() {
         let pos = active.pick(rng, growers);
         let k = active.list[pos];
         let (x0, y0, x1, y1) = bbox[k];
-        // open sides as (length, side), in the order tested
-        let mut sides = [(0usize, 0u8); 4];
-        let mut n_open = 0;
-        // Under the longest-side rule only the longest open sides can be chosen, so the shorter
-        // pair of sides is tested only when neither of the longer pair is open; `sides` keeps the
-        // order 0..4 within a length. The balanced rule weighs every open side.
         let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+        let len_of = |side: u8| if side < 2 { tall } else { wide };
+        let was_live = live[k];
+        // Each side is tested at most once a step, and only if it can matter: `state[side]` is 0
+        // until tested, then 1 (open) or 2 (shut or over the cap).
+        let mut state = [0u8; 4];
+        let mut test = |side: u8| -> bool {
+            let i = side as usize;
+            if state[i] == 0 {
+                let open = live[k] & 1 << side != 0
+                    && side_open(free, wb, bbox[k], side)
+                    && within_cap(area[k], len_of(side), growers[k].target);
+                if !open {
+                    live[k] &= !(1 << side);
+                }
+                state[i] = if open { 1 } else { 2 };
+            }
+            state[i] == 1
+        };
+        let kept = keep_sides(rule, bbox[k], seed_xy[k], was_live, &mut test);
+        if kept == 0 {
+            active.remove(pos);
+            continue;
+        }
+        // as (length, side), the longer pair of sides first
         let order: [u8; 4] = if wide > tall {
             [2, 3, 0, 1]
         } else {
             [0, 1, 2, 3]
         };
-        for (tested, &side) in order.iter().enumerate() {
-            if rule == GrowthRule::Longest && tested == 2 && tall != wide && n_open > 0 {
-                break;
-            }
-            if live[k] & 1 << side == 0 {
-                continue;
-            }
-            // side 0: left, 1: right, 2: down, 3: up
-            let (len, ok) = match side {
-                0 => (
-                    tall,
-                    all_set(free.col(x0 - 1), y0, y1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)
-                        }),
-                ),
-                1 => (
-                    tall,
-                    all_set(free.col(x1 + 1), y0, y1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.v.col(x1 + 1), y0, y1)
-                                && none_set(b.h.col(x1 + 1), y0 + 1, y1)
-                        }),
-                ),
-                2 => (
-                    wide,
-                    all_set(free.row(y0 - 1), x0, x1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)
-                        }),
-                ),
-                _ => (
-                    wide,
-                    all_set(free.row(y1 + 1), x0, x1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.h.row(y1 + 1), x0, x1)
-                                && none_set(b.v.row(y1 + 1), x0 + 1, x1)
-                        }),
-                ),
-            };
-            if ok && within_cap(area[k], len, growers[k].target) {
-                sides[n_open] = (len, side);
+        let mut sides = [(0usize, 0u8); 4];
+        let mut n_open = 0;
+        for side in order {
+            if kept & 1 << side != 0 {
+                sides[n_open] = (len_of(side), side);
                 n_open += 1;
-            } else {
-                live[k] &= !(1 << side);
             }
-        }
-        if n_open == 0 {
-            active.remove(pos);
-            continue;
-        }
-        if rule == GrowthRule::Balanced {
-            // Keep only the sides whose new bounding box is centred closest to the seed cell; the
-            // squared offsets are in half cells, so they compare exactly as integers.
-            let (sx, sy) = ((seeds[k] % w) as i64, (seeds[k] / w) as i64);
-            let off = |side: u8| -> i64 {
-                let (a, b, c, d) = (x0 as i64, y0 as i64, x1 as i64, y1 as i64);
-                let (a, b, c, d) = match side {
-                    0 => (a - 1, b, c, d),
-                    1 => (a, b, c + 1, d),
-                    2 => (a, b - 1, c, d),
-                    _ => (a, b, c, d + 1),
-                };
-                let (dx, dy) = (a + c - 2 * sx, b + d - 2 * sy);
-                dx * dx + dy * dy
-            };
-            // Among equally centred sides, prefer an axis still open at both ends: a step that
-            // cannot be balanced by its opposite side later pulls the room off its seed for good.
-            let open = sides[..n_open].iter().fold(0u8, |m, s| m | 1 << s.1);
-            let key = |side: u8| (off(side), u8::from(open & 1 << (side ^ 1) == 0));
-            let mut keys = [(0i64, 0u8); 4];
-            for (key_i, s) in keys.iter_mut().zip(&sides[..n_open]) {
-                *key_i = key(s.1);
-            }
-            let closest = keys[..n_open].iter().copied().min().unwrap_or((0, 0));
-            let mut kept = 0;
-            for i in 0..n_open {
-                if keys[i] == closest {
-                    sides[kept] = sides[i];
-                    kept += 1;
-                }
-            }
-            n_open = kept;
         }
         let sides = &sides[..n_open];
         let best = sides.iter().map(|s| s.0).max().unwrap_or(0);
@@ -591,6 +539,125 @@ pub fn grow_in<'s, R: Rng>(
         }
     }
     &s.area
+}
+
+/// The sides (bit `side`: 0 left, 1 right, 2 down, 3 up) a rectangular step of the box
+/// `(x0, y0, x1, y1)` grown from `seed` may take under `rule`; `test(side)` says whether a side is
+/// open (free, no wall, within the cap) and `live` has every side that may be. Each rule needs only
+/// some sides tested: the longest-side rule the shorter pair only when neither longer side is open,
+/// the balanced rule the sides in order of how far off the seed they would move the box's centre.
+#[inline]
+fn keep_sides(
+    rule: GrowthRule,
+    (x0, y0, x1, y1): (usize, usize, usize, usize),
+    (sx, sy): (i64, i64),
+    live: u8,
+    test: &mut impl FnMut(u8) -> bool,
+) -> u8 {
+    let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+    let mut kept = 0u8;
+    match rule {
+        GrowthRule::Longest => {
+            // only the longest open sides can be chosen
+            let (long, short) = if wide > tall {
+                ([2u8, 3], [0u8, 1])
+            } else {
+                ([0, 1], [2, 3])
+            };
+            for side in long {
+                if test(side) {
+                    kept |= 1 << side;
+                }
+            }
+            if tall == wide || kept == 0 {
+                for side in short {
+                    if test(side) {
+                        kept |= 1 << side;
+                    }
+                }
+            }
+        }
+        GrowthRule::Balanced => {
+            // Keep the open sides whose new bounding box is centred closest to the seed cell
+            // (squared offsets in half cells, so they compare exactly as integers); among those,
+            // prefer an axis still open at both ends: a step that cannot be balanced by its
+            // opposite side later pulls the room off its seed for good.
+            let (a, b, c, d) = (x0 as i64, y0 as i64, x1 as i64, y1 as i64);
+            let off2 = |dx: i64, dy: i64| dx * dx + dy * dy;
+            let offs = [
+                off2(a - 1 + c - 2 * sx, b + d - 2 * sy),
+                off2(a + c + 1 - 2 * sx, b + d - 2 * sy),
+                off2(a + c - 2 * sx, b - 1 + d - 2 * sy),
+                off2(a + c - 2 * sx, b + d + 1 - 2 * sy),
+            ];
+            // the closest sides first, a group of equally close sides at a time
+            let mut rest = live;
+            while rest != 0 && kept == 0 {
+                let closest = (0..4u8)
+                    .filter(|&i| rest & 1 << i != 0)
+                    .map(|i| offs[i as usize])
+                    .min()
+                    .unwrap_or(0);
+                for side in 0..4u8 {
+                    if rest & 1 << side != 0 && offs[side as usize] == closest {
+                        rest &= !(1 << side);
+                        if test(side) {
+                            kept |= 1 << side;
+                        }
+                    }
+                }
+            }
+            if kept.count_ones() > 1 {
+                let mut both_open = 0u8;
+                for side in 0..4u8 {
+                    if kept & 1 << side != 0 && test(side ^ 1) {
+                        both_open |= 1 << side;
+                    }
+                }
+                if both_open != 0 {
+                    kept = both_open;
+                }
+            }
+        }
+    }
+    kept
+}
+
+/// Is the line of cells beside side `side` (0: left, 1: right, 2: down, 3: up) of the box
+/// `(x0, y0, x1, y1)` all free, with no fixed wall between it and the box nor across it?
+#[inline]
+fn side_open(
+    free: &Bits,
+    wb: Option<&WallBits>,
+    (x0, y0, x1, y1): (usize, usize, usize, usize),
+    side: u8,
+) -> bool {
+    match side {
+        0 => {
+            all_set(free.col(x0 - 1), y0, y1)
+                && wb.is_none_or(|b| {
+                    none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)
+                })
+        }
+        1 => {
+            all_set(free.col(x1 + 1), y0, y1)
+                && wb.is_none_or(|b| {
+                    none_set(b.v.col(x1 + 1), y0, y1) && none_set(b.h.col(x1 + 1), y0 + 1, y1)
+                })
+        }
+        2 => {
+            all_set(free.row(y0 - 1), x0, x1)
+                && wb.is_none_or(|b| {
+                    none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)
+                })
+        }
+        _ => {
+            all_set(free.row(y1 + 1), x0, x1)
+                && wb.is_none_or(|b| {
+                    none_set(b.h.row(y1 + 1), x0, x1) && none_set(b.v.row(y1 + 1), x0 + 1, x1)
+                })
+        }
+    }
 }
 
 /// Give cells `a..=b` of row `y` to `label`.
@@ -1165,6 +1232,84 @@ mod tests {
                 assert_eq!(active.list, list);
             }
             assert!(active.is_empty());
+        }
+    }
+
+    /// The side selection as first written: every side tested in a fixed order, then the
+    /// balanced rule's keys computed for all open sides.
+    fn keep_sides_simply(
+        rule: GrowthRule,
+        (x0, y0, x1, y1): (usize, usize, usize, usize),
+        (sx, sy): (i64, i64),
+        open: [bool; 4],
+    ) -> u8 {
+        let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+        let order: [u8; 4] = if wide > tall {
+            [2, 3, 0, 1]
+        } else {
+            [0, 1, 2, 3]
+        };
+        let mut sides = Vec::new();
+        for (tested, &side) in order.iter().enumerate() {
+            if rule == GrowthRule::Longest && tested == 2 && tall != wide && !sides.is_empty() {
+                break;
+            }
+            if open[side as usize] {
+                sides.push(side);
+            }
+        }
+        if rule == GrowthRule::Balanced {
+            let off = |side: u8| -> i64 {
+                let (a, b, c, d) = (x0 as i64, y0 as i64, x1 as i64, y1 as i64);
+                let (a, b, c, d) = match side {
+                    0 => (a - 1, b, c, d),
+                    1 => (a, b, c + 1, d),
+                    2 => (a, b - 1, c, d),
+                    _ => (a, b, c, d + 1),
+                };
+                let (dx, dy) = (a + c - 2 * sx, b + d - 2 * sy);
+                dx * dx + dy * dy
+            };
+            let mask = sides.iter().fold(0u8, |m, s| m | 1 << s);
+            let key = |side: u8| (off(side), u8::from(mask & 1 << (side ^ 1) == 0));
+            let closest = sides.iter().map(|&s| key(s)).min().unwrap_or((0, 0));
+            sides.retain(|&s| key(s) == closest);
+        }
+        sides.iter().fold(0u8, |m, s| m | 1 << s)
+    }
+
+    #[test]
+    fn side_selection_matches_testing_every_side() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(17);
+        for _ in 0..20_000 {
+            let x0 = rng.random_range(1..20);
+            let y0 = rng.random_range(1..20);
+            let x1 = x0 + rng.random_range(0..6);
+            let y1 = y0 + rng.random_range(0..6);
+            // seeds inside the box, or just off it, so offsets tie often
+            let sx = rng.random_range(x0 as i64 - 1..=x1 as i64 + 1);
+            let sy = rng.random_range(y0 as i64 - 1..=y1 as i64 + 1);
+            let open = [0; 4].map(|_| rng.random_range(0..3) > 0);
+            // sides known shut may be left out of `live`; open ones never are
+            let live = (0..4u8).fold(0u8, |m, i| {
+                if open[i as usize] || rng.random() {
+                    m | 1 << i
+                } else {
+                    m
+                }
+            });
+            for rule in RULES {
+                let mut test = |side: u8| open[side as usize];
+                let got = keep_sides(rule, (x0, y0, x1, y1), (sx, sy), live, &mut test);
+                let want = keep_sides_simply(rule, (x0, y0, x1, y1), (sx, sy), open);
+                assert_eq!(
+                    got,
+                    want,
+                    "{rule:?} box {:?} seed {:?} open {open:?} live {live:b}",
+                    (x0, y0, x1, y1),
+                    (sx, sy)
+                );
+            }
         }
     }
 
