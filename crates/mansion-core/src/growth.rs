@@ -144,22 +144,30 @@ impl Bits {
         span(line, a, b, on, &mut self.rows, self.wr, x);
     }
 
-    /// Clear every bit.
-    fn clear_all(&mut self) {
-        self.rows.fill(0);
-        self.cols.fill(0);
-    }
-
     /// Set the cells of the rectangle `x0..=x1` × `y0..=y1`: a few words per row and per column.
     fn fill_rect(&mut self, x0: usize, y0: usize, x1: usize, y1: usize) {
-        for y in y0..=y1 {
-            let line = &mut self.rows[y * self.wr..(y + 1) * self.wr];
-            set_words(line, x0, x1);
+        // each word's mask once, then or-ed into every line
+        for i in x0 / 64..=x1 / 64 {
+            let m = word_mask(i, x0, x1);
+            for y in y0..=y1 {
+                self.rows[y * self.wr + i] |= m;
+            }
         }
-        for x in x0..=x1 {
-            let line = &mut self.cols[x * self.wc..(x + 1) * self.wc];
-            set_words(line, y0, y1);
+        for i in y0 / 64..=y1 / 64 {
+            let m = word_mask(i, y0, y1);
+            for x in x0..=x1 {
+                self.cols[x * self.wc + i] |= m;
+            }
         }
+    }
+
+    /// All bits clear, shaped like `like`.
+    fn clear_like(&mut self, like: &Bits) {
+        (self.wr, self.wc) = (like.wr, like.wc);
+        self.rows.clear();
+        self.rows.resize(like.rows.len(), 0);
+        self.cols.clear();
+        self.cols.resize(like.cols.len(), 0);
     }
 
     #[inline]
@@ -179,15 +187,6 @@ fn word_mask(i: usize, a: usize, b: usize) -> u64 {
     let lo = a.max(i * 64) - i * 64;
     let hi = b.min(i * 64 + 63) - i * 64;
     (u64::MAX >> (63 - hi)) & (u64::MAX << lo)
-}
-
-/// Set bits `a..=b` of one line.
-#[inline]
-fn set_words(line: &mut [u64], a: usize, b: usize) {
-    #[allow(clippy::needless_range_loop)]
-    for i in a / 64..=b / 64 {
-        line[i] |= word_mask(i, a, b);
-    }
 }
 
 /// Set or clear bits `a..=b` of one line, a few words at a time, and bit `at` of each crossing
@@ -488,8 +487,7 @@ pub fn grow_in<'s, R: Rng>(
         for y in y0..=y1 {
             grid.cells[y * w + x0..=y * w + x1].fill(g.label);
         }
-        room.clone_from(&field.free);
-        room.clear_all();
+        room.clear_like(&field.free);
         room.fill_rect(x0, y0, x1, y1);
     }
 
@@ -1185,9 +1183,11 @@ mod tests {
                 let x1 = rng.random_range(x0..w);
                 let y0 = rng.random_range(0..h);
                 let y1 = rng.random_range(y0..h);
-                let mut fast = Bits::new(w, h);
+                // a used buffer of another shape, cleared to this one
+                let mut fast = Bits::new(h + 3, w + 5);
                 fast.rows.fill(u64::MAX);
-                fast.clear_all();
+                fast.cols.fill(u64::MAX);
+                fast.clear_like(&Bits::new(w, h));
                 fast.fill_rect(x0, y0, x1, y1);
                 let mut slow = Bits::new(w, h);
                 for y in y0..=y1 {
