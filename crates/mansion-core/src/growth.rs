@@ -39,9 +39,47 @@ fn within_cap(area: usize, add: usize, target: f64) -> bool {
     after <= target || after - target < target - area as f64
 }
 
-/// Pick an index among `active` rooms with probability proportional to their target area.
-fn pick_weighted<R: Rng>(rng: &mut R, growers: &[Grower], active: &[usize]) -> usize {
-    let total: f64 = active.iter().map(|&k| growers[k].target.max(1.0)).sum();
+/// The rooms still growing in a phase, drawn with probability proportional to their target area.
+#[derive(Default)]
+struct Active {
+    list: Vec<usize>,
+    /// The sum of the listed rooms' weights, in list order; `None` once the list has changed.
+    total: Option<f64>,
+}
+
+impl Active {
+    /// List the growers still short of their targets.
+    fn reset(&mut self, growers: &[Grower], area: &[usize]) {
+        self.list.clear();
+        self.list
+            .extend((0..growers.len()).filter(|&k| (area[k] as f64) < growers[k].target));
+        self.total = None;
+    }
+
+    fn is_empty(&self) -> bool {
+        self.list.is_empty()
+    }
+
+    /// Drop the room at position `pos` (the list's order changes as in `Vec::swap_remove`).
+    fn remove(&mut self, pos: usize) {
+        self.list.swap_remove(pos);
+        self.total = None;
+    }
+
+    /// Pick a position in the list with probability proportional to target area. The total is
+    /// summed afresh (in list order, so exactly as before) only after the list has changed.
+    fn pick<R: Rng>(&mut self, rng: &mut R, growers: &[Grower]) -> usize {
+        let list = &self.list;
+        let total = *self
+            .total
+            .get_or_insert_with(|| list.iter().map(|&k| growers[k].target.max(1.0)).sum());
+        pick_weighted(rng, growers, list, total)
+    }
+}
+
+/// Pick an index among `active` rooms with probability proportional to their target area, given
+/// the sum of their weights.
+fn pick_weighted<R: Rng>(rng: &mut R, growers: &[Grower], active: &[usize], total: f64) -> usize {
     let mut u = rng.random::<f64>() * total;
     for (pos, &k) in active.iter().enumerate() {
         u -= growers[k].target.max(1.0);
@@ -106,6 +144,32 @@ impl Bits {
         span(line, a, b, on, &mut self.rows, self.wr, x);
     }
 
+    /// Set the cells of the rectangle `x0..=x1` × `y0..=y1`: a few words per row and per column.
+    fn fill_rect(&mut self, x0: usize, y0: usize, x1: usize, y1: usize) {
+        // each word's mask once, then or-ed into every line
+        for i in x0 / 64..=x1 / 64 {
+            let m = word_mask(i, x0, x1);
+            for y in y0..=y1 {
+                self.rows[y * self.wr + i] |= m;
+            }
+        }
+        for i in y0 / 64..=y1 / 64 {
+            let m = word_mask(i, y0, y1);
+            for x in x0..=x1 {
+                self.cols[x * self.wc + i] |= m;
+            }
+        }
+    }
+
+    /// All bits clear, shaped like `like`.
+    fn clear_like(&mut self, like: &Bits) {
+        (self.wr, self.wc) = (like.wr, like.wc);
+        self.rows.clear();
+        self.rows.resize(like.rows.len(), 0);
+        self.cols.clear();
+        self.cols.resize(like.cols.len(), 0);
+    }
+
     #[inline]
     fn row(&self, y: usize) -> &[u64] {
         &self.rows[y * self.wr..(y + 1) * self.wr]
@@ -137,17 +201,28 @@ fn span(
     stride: usize,
     at: usize,
 ) {
-    for (i, word) in line.iter_mut().enumerate().take(b / 64 + 1).skip(a / 64) {
+    // (an index loop: iterator chains here compiled to slower code, `skip`/`take` to calls of
+    // `Take::nth`)
+    #[allow(clippy::needless_range_loop)]
+    for i in a / 64..=b / 64 {
         let m = word_mask(i, a, b);
-        *word = if on { *word | m } else { *word & !m };
+        line[i] = if on { line[i] | m } else { line[i] & !m };
     }
+    // word `at / 64` of each crossing line `a..=b`
     let m = 1u64 << (at % 64);
-    for word in cross[a * stride + at / 64..]
-        .iter_mut()
-        .step_by(stride)
-        .take(b - a + 1)
-    {
-        *word = if on { *word | m } else { *word & !m };
+    let (first, last) = (a * stride + at / 64, b * stride + at / 64);
+    let cross = &mut cross[..=last];
+    let mut i = first;
+    if on {
+        while i <= last {
+            cross[i] |= m;
+            i += stride;
+        }
+    } else {
+        while i <= last {
+            cross[i] &= !m;
+            i += stride;
+        }
     }
 }
 
@@ -264,8 +339,11 @@ pub struct GrowScratch {
     rooms: Vec<Bits>,
     area: Vec<usize>,
     bbox: Vec<(usize, usize, usize, usize)>,
-    active: Vec<usize>,
-    sides: Vec<(usize, u8)>,
+    active: Active,
+    /// Per room, the sides (bit `side`) not yet found shut in the rectangular phase.
+    live: Vec<u8>,
+    /// Seed cells as (x, y).
+    seed_xy: Vec<(i64, i64)>,
     runs: RunScratch,
 }
 
@@ -306,104 +384,74 @@ pub fn grow_in<'s, R: Rng>(
     s.area.resize(n, 1);
     let area = &mut s.area;
     // Inclusive bounding boxes (x0, y0, x1, y1). During the rectangular phase they are the rooms,
-    // so the rooms' own bits are only written once that phase is over.
+    // and only the free bits are kept up to date: the grid's cells and the rooms' own bits are
+    // written once that phase is over.
     s.bbox.clear();
     s.bbox
         .extend(seeds.iter().map(|&c| (c % w, c / w, c % w, c / w)));
     let bbox = &mut s.bbox;
-    for k in 0..n {
-        let (x, y, _, _) = bbox[k];
+    for &(x, y, _, _) in bbox.iter() {
         debug_assert_eq!(grid.cells[y * w + x], EMPTY);
-        grid.cells[y * w + x] = growers[k].label;
         free.row_span(y, x, x, false);
     }
 
-    // --- rectangular growth: add a whole free line beside one side, longest side first ---
+    // --- rectangular growth: add a whole free line beside one side ---
     let active = &mut s.active;
-    active.clear();
-    active.extend((0..n).filter(|&k| (area[k] as f64) < growers[k].target));
-    let sides = &mut s.sides;
+    active.reset(growers, area);
+    // A side found shut (or over the cap) stays so for the rest of the phase: cells only ever
+    // get taken, walls stay, the room's steps on other sides only lengthen the line beside it (a
+    // superset of the cells and walls tested) and the cap only tightens as the room and the line
+    // grow. So each room keeps a mask of the sides still worth testing.
+    s.live.clear();
+    s.live.resize(n, 0b1111);
+    let live = &mut s.live;
+    s.seed_xy.clear();
+    s.seed_xy
+        .extend(seeds.iter().map(|&c| ((c % w) as i64, (c / w) as i64)));
+    let seed_xy = &s.seed_xy;
     while !active.is_empty() {
-        let pos = pick_weighted(rng, growers, active);
-        let k = active[pos];
+        let pos = active.pick(rng, growers);
+        let k = active.list[pos];
         let (x0, y0, x1, y1) = bbox[k];
-        sides.clear();
-        // Under the longest-side rule only the longest open sides can be chosen, so the shorter
-        // pair of sides is tested only when neither of the longer pair is open; `sides` keeps the
-        // order 0..4 within a length. The balanced rule weighs every open side.
         let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+        let len_of = |side: u8| if side < 2 { tall } else { wide };
+        let was_live = live[k];
+        // Each side is tested at most once a step, and only if it can matter: `state[side]` is 0
+        // until tested, then 1 (open) or 2 (shut or over the cap).
+        let mut state = [0u8; 4];
+        let mut test = |side: u8| -> bool {
+            let i = side as usize;
+            if state[i] == 0 {
+                let open = live[k] & 1 << side != 0
+                    && side_open(free, wb, bbox[k], side)
+                    && within_cap(area[k], len_of(side), growers[k].target);
+                if !open {
+                    live[k] &= !(1 << side);
+                }
+                state[i] = if open { 1 } else { 2 };
+            }
+            state[i] == 1
+        };
+        let kept = keep_sides(rule, bbox[k], seed_xy[k], was_live, &mut test);
+        if kept == 0 {
+            active.remove(pos);
+            continue;
+        }
+        // as (length, side), the longer pair of sides first
         let order: [u8; 4] = if wide > tall {
             [2, 3, 0, 1]
         } else {
             [0, 1, 2, 3]
         };
-        for (tested, &side) in order.iter().enumerate() {
-            if rule == GrowthRule::Longest && tested == 2 && tall != wide && !sides.is_empty() {
-                break;
-            }
-            // side 0: left, 1: right, 2: down, 3: up
-            let (len, ok) = match side {
-                0 => (
-                    y1 - y0 + 1,
-                    all_set(free.col(x0 - 1), y0, y1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)
-                        }),
-                ),
-                1 => (
-                    y1 - y0 + 1,
-                    all_set(free.col(x1 + 1), y0, y1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.v.col(x1 + 1), y0, y1)
-                                && none_set(b.h.col(x1 + 1), y0 + 1, y1)
-                        }),
-                ),
-                2 => (
-                    x1 - x0 + 1,
-                    all_set(free.row(y0 - 1), x0, x1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)
-                        }),
-                ),
-                _ => (
-                    x1 - x0 + 1,
-                    all_set(free.row(y1 + 1), x0, x1)
-                        && wb.is_none_or(|b| {
-                            none_set(b.h.row(y1 + 1), x0, x1)
-                                && none_set(b.v.row(y1 + 1), x0 + 1, x1)
-                        }),
-                ),
-            };
-            if ok && within_cap(area[k], len, growers[k].target) {
-                sides.push((len, side));
+        let mut sides = [(0usize, 0u8); 4];
+        let mut n_open = 0;
+        for side in order {
+            if kept & 1 << side != 0 {
+                sides[n_open] = (len_of(side), side);
+                n_open += 1;
             }
         }
-        if sides.is_empty() {
-            active.swap_remove(pos);
-            continue;
-        }
-        if rule == GrowthRule::Balanced {
-            // Keep only the sides whose new bounding box is centred closest to the seed cell; the
-            // squared offsets are in half cells, so they compare exactly as integers.
-            let (sx, sy) = ((seeds[k] % w) as i64, (seeds[k] / w) as i64);
-            let off = |side: u8| -> i64 {
-                let (a, b, c, d) = (x0 as i64, y0 as i64, x1 as i64, y1 as i64);
-                let (a, b, c, d) = match side {
-                    0 => (a - 1, b, c, d),
-                    1 => (a, b, c + 1, d),
-                    2 => (a, b - 1, c, d),
-                    _ => (a, b, c, d + 1),
-                };
-                let (dx, dy) = (a + c - 2 * sx, b + d - 2 * sy);
-                dx * dx + dy * dy
-            };
-            // Among equally centred sides, prefer an axis still open at both ends: a step that
-            // cannot be balanced by its opposite side later pulls the room off its seed for good.
-            let open = sides.iter().fold(0u8, |m, s| m | 1 << s.1);
-            let key = |side: u8| (off(side), u8::from(open & 1 << (side ^ 1) == 0));
-            let closest = sides.iter().map(|s| key(s.1)).min().unwrap_or((0, 0));
-            sides.retain(|s| key(s.1) == closest);
-        }
+        let sides = &sides[..n_open];
         let best = sides.iter().map(|s| s.0).max().unwrap_or(0);
         let n_ties = sides.iter().filter(|s| s.0 == best).count();
         let pick = if n_ties > 1 {
@@ -416,42 +464,40 @@ pub fn grow_in<'s, R: Rng>(
             .filter(|s| s.0 == best)
             .nth(pick)
             .map_or(0, |s| s.1);
-        let label = growers[k].label;
         match side {
             0 | 1 => {
                 let x = if side == 0 { x0 - 1 } else { x1 + 1 };
-                take_col(grid, free, x, y0, y1, label);
+                free.col_span(x, y0, y1, false);
                 bbox[k] = (x0.min(x), y0, x1.max(x), y1);
             }
             _ => {
                 let y = if side == 2 { y0 - 1 } else { y1 + 1 };
-                take_row(grid, free, y, x0, x1, label);
+                free.row_span(y, x0, x1, false);
                 bbox[k] = (x0, y0.min(y), x1, y1.max(y));
             }
         }
         area[k] += best;
         if area[k] as f64 >= growers[k].target {
-            active.swap_remove(pos);
+            active.remove(pos);
         }
+    }
+    // the rectangles into the grid, and into the rooms' own bits for the L-shaped phase
+    s.rooms.resize_with(n, Bits::default);
+    for ((room, &(x0, y0, x1, y1)), g) in s.rooms.iter_mut().zip(bbox.iter()).zip(growers) {
+        for y in y0..=y1 {
+            grid.cells[y * w + x0..=y * w + x1].fill(g.label);
+        }
+        room.clear_like(&field.free);
+        room.fill_rect(x0, y0, x1, y1);
     }
 
     // --- L-shaped growth: extend by the longest run of free cells beside the room's own cells ---
-    s.rooms.resize_with(n, Bits::default);
-    for (room, &(x0, y0, x1, y1)) in s.rooms.iter_mut().zip(bbox.iter()) {
-        room.clone_from(&field.free);
-        room.rows.fill(0);
-        room.cols.fill(0);
-        for y in y0..=y1 {
-            room.row_span(y, x0, x1, true);
-        }
-    }
-    active.clear();
-    active.extend((0..n).filter(|&k| (area[k] as f64) < growers[k].target));
+    active.reset(growers, area);
     s.runs.f.resize(free.wr.max(free.wc), 0);
     s.runs.zeros.resize(free.wr.max(free.wc), 0);
     while !active.is_empty() {
-        let pos = pick_weighted(rng, growers, active);
-        let k = active[pos];
+        let pos = active.pick(rng, growers);
+        let k = active.list[pos];
         let label = growers[k].label;
         let room = &mut s.rooms[k];
         match best_run(
@@ -482,15 +528,134 @@ pub fn grow_in<'s, R: Rng>(
                 let (x0, y0, x1, y1) = bbox[k];
                 bbox[k] = (x0.min(sx), y0.min(sy), x1.max(ex), y1.max(ey));
                 if area[k] as f64 >= growers[k].target {
-                    active.swap_remove(pos);
+                    active.remove(pos);
                 }
             }
             _ => {
-                active.swap_remove(pos);
+                active.remove(pos);
             }
         }
     }
     &s.area
+}
+
+/// The sides (bit `side`: 0 left, 1 right, 2 down, 3 up) a rectangular step of the box
+/// `(x0, y0, x1, y1)` grown from `seed` may take under `rule`; `test(side)` says whether a side is
+/// open (free, no wall, within the cap) and `live` has every side that may be. Each rule needs only
+/// some sides tested: the longest-side rule the shorter pair only when neither longer side is open,
+/// the balanced rule the sides in order of how far off the seed they would move the box's centre.
+#[inline]
+fn keep_sides(
+    rule: GrowthRule,
+    (x0, y0, x1, y1): (usize, usize, usize, usize),
+    (sx, sy): (i64, i64),
+    live: u8,
+    test: &mut impl FnMut(u8) -> bool,
+) -> u8 {
+    let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+    let mut kept = 0u8;
+    match rule {
+        GrowthRule::Longest => {
+            // only the longest open sides can be chosen
+            let (long, short) = if wide > tall {
+                ([2u8, 3], [0u8, 1])
+            } else {
+                ([0, 1], [2, 3])
+            };
+            for side in long {
+                if test(side) {
+                    kept |= 1 << side;
+                }
+            }
+            if tall == wide || kept == 0 {
+                for side in short {
+                    if test(side) {
+                        kept |= 1 << side;
+                    }
+                }
+            }
+        }
+        GrowthRule::Balanced => {
+            // Keep the open sides whose new bounding box is centred closest to the seed cell
+            // (squared offsets in half cells, so they compare exactly as integers); among those,
+            // prefer an axis still open at both ends: a step that cannot be balanced by its
+            // opposite side later pulls the room off its seed for good.
+            let (a, b, c, d) = (x0 as i64, y0 as i64, x1 as i64, y1 as i64);
+            let off2 = |dx: i64, dy: i64| dx * dx + dy * dy;
+            let offs = [
+                off2(a - 1 + c - 2 * sx, b + d - 2 * sy),
+                off2(a + c + 1 - 2 * sx, b + d - 2 * sy),
+                off2(a + c - 2 * sx, b - 1 + d - 2 * sy),
+                off2(a + c - 2 * sx, b + d + 1 - 2 * sy),
+            ];
+            // the closest sides first, a group of equally close sides at a time
+            let mut rest = live;
+            while rest != 0 && kept == 0 {
+                let closest = (0..4u8)
+                    .filter(|&i| rest & 1 << i != 0)
+                    .map(|i| offs[i as usize])
+                    .min()
+                    .unwrap_or(0);
+                for side in 0..4u8 {
+                    if rest & 1 << side != 0 && offs[side as usize] == closest {
+                        rest &= !(1 << side);
+                        if test(side) {
+                            kept |= 1 << side;
+                        }
+                    }
+                }
+            }
+            if kept.count_ones() > 1 {
+                let mut both_open = 0u8;
+                for side in 0..4u8 {
+                    if kept & 1 << side != 0 && test(side ^ 1) {
+                        both_open |= 1 << side;
+                    }
+                }
+                if both_open != 0 {
+                    kept = both_open;
+                }
+            }
+        }
+    }
+    kept
+}
+
+/// Is the line of cells beside side `side` (0: left, 1: right, 2: down, 3: up) of the box
+/// `(x0, y0, x1, y1)` all free, with no fixed wall between it and the box nor across it?
+#[inline]
+fn side_open(
+    free: &Bits,
+    wb: Option<&WallBits>,
+    (x0, y0, x1, y1): (usize, usize, usize, usize),
+    side: u8,
+) -> bool {
+    match side {
+        0 => {
+            all_set(free.col(x0 - 1), y0, y1)
+                && wb.is_none_or(|b| {
+                    none_set(b.v.col(x0), y0, y1) && none_set(b.h.col(x0 - 1), y0 + 1, y1)
+                })
+        }
+        1 => {
+            all_set(free.col(x1 + 1), y0, y1)
+                && wb.is_none_or(|b| {
+                    none_set(b.v.col(x1 + 1), y0, y1) && none_set(b.h.col(x1 + 1), y0 + 1, y1)
+                })
+        }
+        2 => {
+            all_set(free.row(y0 - 1), x0, x1)
+                && wb.is_none_or(|b| {
+                    none_set(b.h.row(y0), x0, x1) && none_set(b.v.row(y0 - 1), x0 + 1, x1)
+                })
+        }
+        _ => {
+            all_set(free.row(y1 + 1), x0, x1)
+                && wb.is_none_or(|b| {
+                    none_set(b.h.row(y1 + 1), x0, x1) && none_set(b.v.row(y1 + 1), x0 + 1, x1)
+                })
+        }
+    }
 }
 
 /// Give cells `a..=b` of row `y` to `label`.
@@ -1006,6 +1171,145 @@ mod tests {
                 }
             }
             assert!(spans.rows == cells.rows && spans.cols == cells.cols);
+        }
+    }
+
+    #[test]
+    fn rectangles_fill_rows_and_columns_alike() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(11);
+        for (w, h) in [(10, 7), (66, 66), (130, 70)] {
+            for _ in 0..200 {
+                let x0 = rng.random_range(0..w);
+                let x1 = rng.random_range(x0..w);
+                let y0 = rng.random_range(0..h);
+                let y1 = rng.random_range(y0..h);
+                // a used buffer of another shape, cleared to this one
+                let mut fast = Bits::new(h + 3, w + 5);
+                fast.rows.fill(u64::MAX);
+                fast.cols.fill(u64::MAX);
+                fast.clear_like(&Bits::new(w, h));
+                fast.fill_rect(x0, y0, x1, y1);
+                let mut slow = Bits::new(w, h);
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        slow.set(x, y);
+                    }
+                }
+                assert!(fast.rows == slow.rows && fast.cols == slow.cols);
+            }
+        }
+    }
+
+    #[test]
+    fn weighted_picks_with_a_kept_total_match_a_fresh_sum() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(13);
+        for case in 0..300 {
+            let n = rng.random_range(1..25);
+            let growers: Vec<Grower> = (0..n)
+                .map(|k| Grower {
+                    label: k as Label,
+                    target: rng.random::<f64>() * 300.0 + if case % 3 == 0 { 0.0 } else { 0.3 },
+                })
+                .collect();
+            let area = vec![0usize; n];
+            let mut active = Active::default();
+            active.reset(&growers, &area);
+            let mut list = active.list.clone();
+            let (mut fast, mut slow) = (
+                Xoshiro256PlusPlus::seed_from_u64(case),
+                Xoshiro256PlusPlus::seed_from_u64(case),
+            );
+            while !list.is_empty() {
+                let total: f64 = list.iter().map(|&k| growers[k].target.max(1.0)).sum();
+                let want = pick_weighted(&mut slow, &growers, &list, total);
+                let got = active.pick(&mut fast, &growers);
+                assert_eq!(got, want);
+                // drop the picked room now and then, as the growth loops do
+                if rng.random_range(0..4) == 0 {
+                    active.remove(got);
+                    list.swap_remove(want);
+                }
+                assert_eq!(active.list, list);
+            }
+            assert!(active.is_empty());
+        }
+    }
+
+    /// The side selection as first written: every side tested in a fixed order, then the
+    /// balanced rule's keys computed for all open sides.
+    fn keep_sides_simply(
+        rule: GrowthRule,
+        (x0, y0, x1, y1): (usize, usize, usize, usize),
+        (sx, sy): (i64, i64),
+        open: [bool; 4],
+    ) -> u8 {
+        let (tall, wide) = (y1 - y0 + 1, x1 - x0 + 1);
+        let order: [u8; 4] = if wide > tall {
+            [2, 3, 0, 1]
+        } else {
+            [0, 1, 2, 3]
+        };
+        let mut sides = Vec::new();
+        for (tested, &side) in order.iter().enumerate() {
+            if rule == GrowthRule::Longest && tested == 2 && tall != wide && !sides.is_empty() {
+                break;
+            }
+            if open[side as usize] {
+                sides.push(side);
+            }
+        }
+        if rule == GrowthRule::Balanced {
+            let off = |side: u8| -> i64 {
+                let (a, b, c, d) = (x0 as i64, y0 as i64, x1 as i64, y1 as i64);
+                let (a, b, c, d) = match side {
+                    0 => (a - 1, b, c, d),
+                    1 => (a, b, c + 1, d),
+                    2 => (a, b - 1, c, d),
+                    _ => (a, b, c, d + 1),
+                };
+                let (dx, dy) = (a + c - 2 * sx, b + d - 2 * sy);
+                dx * dx + dy * dy
+            };
+            let mask = sides.iter().fold(0u8, |m, s| m | 1 << s);
+            let key = |side: u8| (off(side), u8::from(mask & 1 << (side ^ 1) == 0));
+            let closest = sides.iter().map(|&s| key(s)).min().unwrap_or((0, 0));
+            sides.retain(|&s| key(s) == closest);
+        }
+        sides.iter().fold(0u8, |m, s| m | 1 << s)
+    }
+
+    #[test]
+    fn side_selection_matches_testing_every_side() {
+        let mut rng = Xoshiro256PlusPlus::seed_from_u64(17);
+        for _ in 0..20_000 {
+            let x0 = rng.random_range(1..20);
+            let y0 = rng.random_range(1..20);
+            let x1 = x0 + rng.random_range(0..6);
+            let y1 = y0 + rng.random_range(0..6);
+            // seeds inside the box, or just off it, so offsets tie often
+            let sx = rng.random_range(x0 as i64 - 1..=x1 as i64 + 1);
+            let sy = rng.random_range(y0 as i64 - 1..=y1 as i64 + 1);
+            let open = [0; 4].map(|_| rng.random_range(0..3) > 0);
+            // sides known shut may be left out of `live`; open ones never are
+            let live = (0..4u8).fold(0u8, |m, i| {
+                if open[i as usize] || rng.random() {
+                    m | 1 << i
+                } else {
+                    m
+                }
+            });
+            for rule in RULES {
+                let mut test = |side: u8| open[side as usize];
+                let got = keep_sides(rule, (x0, y0, x1, y1), (sx, sy), live, &mut test);
+                let want = keep_sides_simply(rule, (x0, y0, x1, y1), (sx, sy), open);
+                assert_eq!(
+                    got,
+                    want,
+                    "{rule:?} box {:?} seed {:?} open {open:?} live {live:b}",
+                    (x0, y0, x1, y1),
+                    (sx, sy)
+                );
+            }
         }
     }
 
