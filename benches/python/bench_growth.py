@@ -129,19 +129,23 @@ def _time(fn, repeat: int) -> tuple[list[float], Any]:
     return times, out
 
 
-def time_rust(case: dict[str, Any], batch: int, repeat: int) -> tuple[list[float], np.ndarray]:
+def time_rust(case: dict[str, Any], batch: int, repeat: int, growth: str) -> tuple[list[float], np.ndarray]:
     from mansion import _core
 
     def run(n: int = batch) -> np.ndarray:
-        return _core.grow_candidates(case["labels"], case["region"], case["seeds"], case["targets"], n, RNG_SEED, RADIUS)
+        return _core.grow_candidates(
+            case["labels"], case["region"], case["seeds"], case["targets"], n, RNG_SEED, RADIUS, growth
+        )
 
     run(min(batch, 8))  # warm-up: thread pool, page faults
     return _time(run, repeat)
 
 
-def time_reference(case: dict[str, Any], batch: int, repeat: int) -> tuple[list[float], np.ndarray, int]:
+def time_reference(case: dict[str, Any], batch: int, repeat: int, growth: str) -> tuple[list[float], np.ndarray, int]:
     def run(n: int) -> np.ndarray:
-        return grow_candidates_reference(case["labels"], case["region"], case["seeds"], case["targets"], n, RNG_SEED, RADIUS)
+        return grow_candidates_reference(
+            case["labels"], case["region"], case["seeds"], case["targets"], n, RNG_SEED, RADIUS, growth
+        )
 
     # a probe on a few candidates (also the warm-up) decides whether the whole batch fits the budget
     probe_n = min(batch, 5)
@@ -153,10 +157,13 @@ def time_reference(case: dict[str, Any], batch: int, repeat: int) -> tuple[list[
     return times, out, n
 
 
-def rust_single_thread(batch: int, repeat: int) -> dict[str, Any] | None:
+def rust_single_thread(batch: int, repeat: int, growth: str) -> dict[str, Any] | None:
     """Rust timings from a child process with RAYON_NUM_THREADS=1."""
     env = dict(os.environ, RAYON_NUM_THREADS="1")
-    cmd = [sys.executable, str(Path(__file__).resolve()), "--rust-only", "--batch", str(batch), "--repeat", str(repeat)]
+    cmd = [
+        sys.executable, str(Path(__file__).resolve()), "--rust-only", "--batch", str(batch),
+        "--repeat", str(repeat), "--growth", growth,
+    ]
     p = subprocess.run(cmd, env=env, capture_output=True, text=True)
     if p.returncode != 0:
         print(f"single-thread child failed:\n{p.stderr}", file=sys.stderr)
@@ -239,12 +246,13 @@ def main() -> int:
     ap.add_argument("--repeat", type=int, default=5, help="timed calls per implementation; the median is reported (default 5)")
     ap.add_argument("--json", metavar="OUT", help="also write the results as JSON to OUT")
     ap.add_argument("--no-single-thread", action="store_true", help="skip the RAYON_NUM_THREADS=1 child run")
+    ap.add_argument("--growth", choices=("balanced", "longest"), default="balanced", help="rectangular phase's side rule, for both implementations (default balanced)")
     ap.add_argument("--rust-only", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args()
     case = build_case()
 
     if args.rust_only:  # child mode: Rust timings as JSON on stdout
-        times, out = time_rust(case, args.batch, args.repeat)
+        times, out = time_rust(case, args.batch, args.repeat, args.growth)
         print(json.dumps(dict(summarise(times, args.batch), checks=check(out, case))))
         return 0
 
@@ -254,6 +262,7 @@ def main() -> int:
         "repeat": args.repeat,
         "rng_seed": RNG_SEED,
         "radius": RADIUS,
+        "growth": args.growth,
         "case": {
             "grid": f"{SIZE}x{SIZE}",
             "notch": f"{NOTCH_W}x{NOTCH_H} top right",
@@ -268,12 +277,12 @@ def main() -> int:
     }
 
     if threads_env is None and not args.no_single_thread:
-        res["rust_1_thread"] = rust_single_thread(args.batch, args.repeat)
+        res["rust_1_thread"] = rust_single_thread(args.batch, args.repeat, args.growth)
 
-    times, out = time_rust(case, args.batch, args.repeat)
+    times, out = time_rust(case, args.batch, args.repeat, args.growth)
     res["rust"] = dict(summarise(times, args.batch), checks=check(out, case))
 
-    times, out, n = time_reference(case, args.batch, args.repeat)
+    times, out, n = time_reference(case, args.batch, args.repeat, args.growth)
     res["reference"] = dict(summarise(times, n), checks=check(out, case))
 
     ref_us = res["reference"]["us_per_candidate"]

@@ -7,8 +7,10 @@ It implements the same algorithm as ``mansion._core.grow_candidates`` (``grow_ba
    tries), keeping it on a region cell at least 2 cells (centre to centre) from the seeds already
    placed; failing that the planned cell itself, failing that the nearest free region cell.
 2. **Rectangular growth.** Rooms are picked with probability proportional to their target; a
-   room adds a whole free line beside one side of its rectangle, the longest such side first
-   (ties at random), while that stays ``within_cap``; a room that cannot grow leaves the phase.
+   room adds a whole free line beside one side of its rectangle while that stays ``within_cap``;
+   a room that cannot grow leaves the phase. Which side: under the ``balanced`` rule, the sides
+   whose grown rectangle is centred closest to the seed cell, then those on an axis open at both
+   ends; then (both rules) the longest such side, ties at random.
 3. **L-shaped growth.** Same picking; a room adds the longest run (at least 2 cells) of free cells
    lying directly beyond its own cells, rows below/above and columns left/right of its bounding
    box (ties at random), again capped by ``within_cap``.
@@ -212,11 +214,36 @@ def _best_run(grid: npt.NDArray[np.int32], label: int, bbox: list[int], rng: np.
     return x0 + row + 1, y0 + start, best, False
 
 
-def grow(grid: npt.NDArray[np.int32], labels: list[int], targets: list[float], seeds: list[int], rng: np.random.Generator) -> list[int]:
+def _balanced(sides: list[tuple[int, int]], box: list[int], seed: tuple[int, int]) -> list[tuple[int, int]]:
+    """The balanced rule's filter: the open sides whose grown box is centred closest to the seed
+    cell (offsets in half cells), then those on an axis open at both ends."""
+    x0, y0, x1, y1 = box
+    sx, sy = seed
+    grown = {0: (x0 - 1, y0, x1, y1), 1: (x0, y0, x1 + 1, y1), 2: (x0, y0 - 1, x1, y1), 3: (x0, y0, x1, y1 + 1)}
+    open_sides = {s for _, s in sides}
+
+    def key(side: int) -> tuple[int, int]:
+        a, b, c, d = grown[side]
+        dx, dy = a + c - 2 * sx, b + d - 2 * sy
+        return (dx * dx + dy * dy, int((side ^ 1) not in open_sides))
+
+    best = min(key(s) for _, s in sides)
+    return [(n, s) for n, s in sides if key(s) == best]
+
+
+def grow(
+    grid: npt.NDArray[np.int32],
+    labels: list[int],
+    targets: list[float],
+    seeds: list[int],
+    rng: np.random.Generator,
+    growth: str = "balanced",
+) -> list[int]:
     """Rectangular then L-shaped growth of every room from its seed cell, in place.
 
     ``grid`` is padded, with the round's region set to EMPTY; ``seeds`` are distinct flat indices
-    of EMPTY cells. Returns each room's area in cells.
+    of EMPTY cells; ``growth`` is the rectangular phase's side rule, ``"balanced"`` or
+    ``"longest"``. Returns each room's area in cells.
     """
     w = grid.shape[1]
     n = len(labels)
@@ -249,6 +276,8 @@ def grow(grid: npt.NDArray[np.int32], labels: list[int], targets: list[float], s
         if not sides:
             active.pop(pos)
             continue
+        if growth == "balanced":
+            sides = _balanced(sides, bbox[k], (seeds[k] % w, seeds[k] // w))
         best = max(s[0] for s in sides)
         ties = [s[1] for s in sides if s[0] == best]
         side = ties[int(rng.integers(len(ties)))]
@@ -385,6 +414,7 @@ def grow_candidates_reference(
     batch: int,
     rng_seed: int,
     radius: float,
+    growth: str = "balanced",
 ) -> npt.NDArray[np.int32]:
     """Same signature and semantics as ``mansion._core.grow_candidates``.
 
@@ -422,7 +452,7 @@ def grow_candidates_reference(
         grid = base.copy()
         cells = _sample_seeds(reg, planned, radius, rng)
         if cells is not None:
-            grow(grid, room_labels, target_list, cells, rng)
+            grow(grid, room_labels, target_list, cells, rng, growth)
             assign_remainder(grid, reg, region)
             clean(grid, reg)
         g = grid[1:-1, 1:-1]

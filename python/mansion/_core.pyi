@@ -42,5 +42,7 @@ def grow_candidates(
     batch: int,
     rng_seed: int,
     radius: float,
+    growth: str = "balanced",
 ) -> npt.NDArray[np.int32]:
-    """Grow `batch` candidate partitions of `region` from perturbed seeds (for benchmarks)."""
+    """Grow `batch` candidate partitions of `region` from perturbed seeds (for benchmarks);
+    `growth` is the rectangular phase's rule, "balanced" or "longest"."""

@@ -74,9 +74,10 @@ impl Default for CutOptions {
         CutOptions {
             retries: 10,
             batch: 100,
-            gammas: vec![1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0],
+            // the Python package's SolverSettings defaults, chosen by measurement there
+            gammas: vec![0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0],
             r_base: 2.0,
-            k: 8.0,
+            k: 4.0,
             seed_separation: 2.0,
             fallback_samples: 400,
             min_contact: 2,
@@ -616,6 +617,7 @@ pub fn grow_batch(
     batch: usize,
     rng_seed: u64,
     radius: f64,
+    growth: GrowthRule,
 ) -> Vec<Grid> {
     let walls = Walls::none(grid.w, grid.h);
     let cells = grid.cells.iter().filter(|&&c| c == region).count() as f64;
@@ -643,6 +645,7 @@ pub fn grow_batch(
         r_base: radius,
         k: 0.0,
         gammas: vec![1.0],
+        growth,
         ..CutOptions::default()
     };
     let p = Prepared::new(grid, &walls, &spec, &opts, n_labels, 0);

@@ -4,6 +4,7 @@
 
 use mansion_core::cut::grow_batch;
 use mansion_core::grid::{Grid, Label, EMPTY, OUTSIDE};
+use mansion_core::growth::GrowthRule;
 use mansion_core::raster::{rasterise as core_rasterise, FootprintSpec};
 use mansion_core::region::{pad, unpad};
 use mansion_core::seedplan::{request_json, HeuristicPlanner, SeedPlan, SeedPlanner, SeedRequest};
@@ -209,8 +210,10 @@ fn vectorise(
 /// The growth stage of `batch` candidates (grow, then spur removal and hole filling), for
 /// benchmarks: `labels` int32 (rows, cols), row 0 bottom, -1 outside; the cells equal to `region`
 /// are cut into `len(targets)` rooms labelled after the largest label present, seeded around
-/// `seeds` ((m, 2) cell units, x then y) within `radius` cells. Returns int32 (batch, rows, cols).
+/// `seeds` ((m, 2) cell units, x then y) within `radius` cells, with the rectangular phase's
+/// `growth` rule ("balanced" or "longest"). Returns int32 (batch, rows, cols).
 #[pyfunction]
+#[pyo3(signature = (labels, region, seeds, targets, batch, rng_seed, radius, growth = "balanced"))]
 #[allow(clippy::too_many_arguments)]
 fn grow_candidates<'py>(
     py: Python<'py>,
@@ -221,7 +224,19 @@ fn grow_candidates<'py>(
     batch: usize,
     rng_seed: u64,
     radius: f64,
+    growth: &str,
 ) -> PyResult<Bound<'py, PyArray3<i32>>> {
+    let growth = match growth {
+        "balanced" => GrowthRule::Balanced,
+        "longest" => GrowthRule::Longest,
+        other => {
+            return Err(raise(
+                py,
+                "InvalidInputError",
+                format!("growth must be 'balanced' or 'longest', got {other:?}"),
+            ))
+        }
+    };
     let g = grid_from(&labels)?;
     let s = seeds.as_array();
     if s.shape().len() != 2 || s.shape()[1] != 2 || s.shape()[0] != targets.len()? {
@@ -261,6 +276,7 @@ fn grow_candidates<'py>(
             batch,
             rng_seed,
             radius,
+            growth,
         ))
     })?;
     let mut out = Array3::<i32>::from_elem((grids.len(), h, w), -1);
