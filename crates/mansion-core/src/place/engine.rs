@@ -825,26 +825,11 @@ mod tests {
     use crate::place::spec::{DoorSpec, Side, SmallSpec};
 
     fn item(id: &str, ty: &str, size: [f64; 3], tag: Tag, structure: Structure) -> ItemSpec {
-        ItemSpec {
-            id: id.into(),
-            object_type: ty.into(),
-            asset_id: format!("{ty}_1"),
-            size,
-            tag,
-            structure,
-            relations: Vec::new(),
-            has_front: false,
-            small: Vec::new(),
-        }
+        ItemSpec::new(id, ty, size, tag, structure)
     }
 
     fn paired(partner: &str, side: Side, tuck: f64) -> Structure {
-        Structure::Paired {
-            partner: partner.into(),
-            side,
-            count: 1,
-            tuck,
-        }
+        Structure::paired(partner, side, 1, tuck)
     }
 
     fn bedroom(seed: u64) -> PlacementRequest {

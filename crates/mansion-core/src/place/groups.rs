@@ -368,27 +368,12 @@ mod tests {
     use super::*;
     use crate::place::spec::{Relation, RelationKind};
 
-    pub(crate) fn item(id: &str, size: [f64; 3], tag: Tag, structure: Structure) -> ItemSpec {
-        ItemSpec {
-            id: id.into(),
-            object_type: id.into(),
-            asset_id: format!("{id}_1"),
-            size,
-            tag,
-            structure,
-            relations: Vec::new(),
-            has_front: false,
-            small: Vec::new(),
-        }
+    fn item(id: &str, size: [f64; 3], tag: Tag, structure: Structure) -> ItemSpec {
+        ItemSpec::new(id, id, size, tag, structure)
     }
 
     fn paired(partner: &str, side: Side, count: u32, tuck: f64) -> Structure {
-        Structure::Paired {
-            partner: partner.into(),
-            side,
-            count,
-            tuck,
-        }
+        Structure::paired(partner, side, count, tuck)
     }
 
     #[test]

@@ -264,3 +264,46 @@ pub struct Placement {
     pub matrices: Vec<MatrixOutcome>,
     pub stats: PlacementStats,
 }
+
+impl Structure {
+    pub fn matrix(rows: u32, cols: u32, row_gap: f64, col_gap: f64) -> Self {
+        Self::Matrix {
+            rows,
+            cols,
+            row_gap,
+            col_gap,
+        }
+    }
+
+    pub fn paired(partner: &str, side: Side, count: u32, tuck: f64) -> Self {
+        Self::Paired {
+            partner: partner.into(),
+            side,
+            count,
+            tuck,
+        }
+    }
+}
+
+impl ItemSpec {
+    /// An item with no relations, no front and nothing on top; the asset id is `<type>_1`.
+    pub fn new(
+        id: &str,
+        object_type: &str,
+        size: [f64; 3],
+        tag: Tag,
+        structure: Structure,
+    ) -> Self {
+        Self {
+            id: id.into(),
+            object_type: object_type.into(),
+            asset_id: format!("{object_type}_1"),
+            size,
+            tag,
+            structure,
+            relations: Vec::new(),
+            has_front: false,
+            small: Vec::new(),
+        }
+    }
+}
