@@ -32,6 +32,7 @@ _AGENTS = {
     "abstract topological connectivity": "topology",
     "seed planning assistant": "seed",
     "You are a floor plan reader": "t2d",
+    "interior object planner": "objects",
 }
 
 
@@ -66,6 +67,10 @@ class Replay:
             m = re.search(r"Plan (\S+)\.", first)
             assert m, "the test descriptions name their plan"
             return f"t2d_{m.group(1)}"
+        if agent == "objects":
+            m = re.search(r"Room id: (\S+),", first)
+            assert m, "the object planner prompt names its room"
+            return f"objects_{m.group(1)}"
         if agent == "seed":
             m = re.search(r"Parent room ID: (\S+),", first)
             assert m, "the seed prompt names its parent"

@@ -6,7 +6,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "grow_candidates"]
+__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "grow_candidates", "place_room", "place_rooms"]
 
 __version__: str
 
@@ -46,3 +46,10 @@ def grow_candidates(
 ) -> npt.NDArray[np.int32]:
     """Grow `batch` candidate partitions of `region` from perturbed seeds (for benchmarks);
     `growth` is the rectangular phase's rule, "balanced" or "longest"."""
+
+def place_room(request_json: str) -> str:
+    """Furnish one room from a PlacementRequest JSON; returns the Placement JSON."""
+
+def place_rooms(requests_json: list[str]) -> list[str]:
+    """Furnish many rooms in parallel: one Placement JSON per room, or
+    ``{"error": {"kind": ..., "message": ...}}`` for a room that failed."""

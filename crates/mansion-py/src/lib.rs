@@ -5,6 +5,9 @@
 use mansion_core::cut::grow_batch;
 use mansion_core::grid::{Grid, Label, EMPTY, OUTSIDE};
 use mansion_core::growth::GrowthRule;
+use mansion_core::place::{
+    place_room as core_place_room, place_rooms as core_place_rooms, PlacementRequest,
+};
 use mansion_core::raster::{rasterise as core_rasterise, FootprintSpec};
 use mansion_core::region::{pad, unpad};
 use mansion_core::seedplan::{request_json, HeuristicPlanner, SeedPlan, SeedPlanner, SeedRequest};
@@ -294,6 +297,54 @@ fn grow_candidates<'py>(
     Ok(out.into_pyarray(py))
 }
 
+/// Furnish one room: the request and the result are JSON (see `_core.pyi`).
+#[pyfunction]
+fn place_room(py: Python<'_>, request_json: &str) -> PyResult<String> {
+    let req: PlacementRequest = parse(py, "placement request", request_json)?;
+    guarded(py, move || {
+        let out = core_place_room(&req)?;
+        serde_json::to_string(&out).map_err(|e| CoreError::InvalidInput(e.to_string()))
+    })
+}
+
+/// Furnish many rooms in parallel. Returns one JSON string per room: the placement, or
+/// `{"error": {"kind": <exception class>, "message": ...}}` for a room that failed, so one bad
+/// room does not cost the others.
+#[pyfunction]
+fn place_rooms(py: Python<'_>, requests_json: Vec<String>) -> PyResult<Vec<String>> {
+    let mut reqs = Vec::with_capacity(requests_json.len());
+    for (k, r) in requests_json.iter().enumerate() {
+        reqs.push(parse::<PlacementRequest>(
+            py,
+            &format!("placement request {k}"),
+            r,
+        )?);
+    }
+    guarded(py, move || {
+        Ok(core_place_rooms(&reqs)
+            .into_iter()
+            .map(|r| match r {
+                Ok(p) => serde_json::to_string(&p)
+                    .unwrap_or_else(|e| error_json("MansionError", &e.to_string())),
+                Err(e) => {
+                    let kind = match e {
+                        CoreError::InvalidFootprint(_) | CoreError::InvalidInput(_) => {
+                            "InvalidInputError"
+                        }
+                        CoreError::Infeasible(_) => "InfeasibleLayoutError",
+                        CoreError::Planner(_) => "PlannerError",
+                    };
+                    error_json(kind, &e.to_string())
+                }
+            })
+            .collect())
+    })
+}
+
+fn error_json(kind: &str, message: &str) -> String {
+    serde_json::json!({"error": {"kind": kind, "message": message}}).to_string()
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
@@ -302,5 +353,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(mask_outline, m)?)?;
     m.add_function(wrap_pyfunction!(vectorise, m)?)?;
     m.add_function(wrap_pyfunction!(grow_candidates, m)?)?;
+    m.add_function(wrap_pyfunction!(place_room, m)?)?;
+    m.add_function(wrap_pyfunction!(place_rooms, m)?)?;
     Ok(())
 }

@@ -22,6 +22,7 @@ __all__ = ["PROMPTS", "Prompt", "load_prompt"]
 PROMPTS = {
     "building_program": "building_program.md",
     "floor_topology": "floor_topology.md",
+    "object_planner": "object_planner.md",
     "seed_planner": "seed_planner.md",
     "t2d_seeds": "t2d_seeds.md",
 }

@@ -147,3 +147,57 @@ def tune_weights(
         f"{result.failures} failures"
     )
     console.print(f"Wrote {escape(str(out))}")
+
+
+class ObjectPlannerChoice(str, Enum):
+    offline = "offline"
+    anthropic = "anthropic"
+
+
+@eval_app.command("placement")
+def eval_placement(
+    runs: Annotated[int, typer.Option(min=1, help="Runs (seeds) per room.")] = 10,
+    json_out: Annotated[Optional[Path], typer.Option("--json", help="Write the figures as JSON.")] = None,
+    seed: Annotated[int, typer.Option(help="First seed; run k uses seed + k.")] = 0,
+    planner: Annotated[
+        ObjectPlannerChoice, typer.Option(help="Object plans: offline rules, or Claude (needs ANTHROPIC_API_KEY).")
+    ] = ObjectPlannerChoice.offline,
+) -> None:
+    """The paper's object-placement benchmark on its four rooms: mean floor and small objects,
+    #OB, #CN, #Rch (%) and seconds per room."""
+    import json
+
+    from rich.table import Table
+
+    from mansion._io import atomic_write_text
+    from mansion.eval.placement import PAPER, ROOMS, evaluate_placement
+
+    console = Console()
+    try:
+        object_planner = None
+        if planner is ObjectPlannerChoice.anthropic:
+            from mansion.agents.llm import LLMClient
+            from mansion.placement.llm import LLMObjectPlanner
+
+            object_planner = LLMObjectPlanner(LLMClient())
+        rooms: dict[str, dict[str, float]] = {}
+        with _progress(console) as bar:
+            task = bar.add_task("placement", total=len(ROOMS))
+            for name in ROOMS:
+                rooms.update(evaluate_placement(runs=runs, seed=seed, rooms=[name], planner=object_planner))
+                bar.advance(task)
+    except MansionError as exc:
+        raise _fail(str(exc)) from exc
+    table = Table(title=f"Object placement, {runs} runs per room (paper: floor + small)")
+    for col in ("room", "floor obj", "small obj", "#OB", "#CN", "#Rch %", "seconds", "paper"):
+        table.add_column(col, justify="left" if col == "room" else "right")
+    for name, r in rooms.items():
+        pf, ps = PAPER[name]
+        table.add_row(
+            name, f"{r['floor_obj']:.1f}", f"{r['small_obj']:.1f}", f"{r['ob']:.1f}", f"{r['cn']:.1f}",
+            f"{r['rch']:.1f}", f"{r['seconds']:.3f}", f"{pf} + {ps}",
+        )
+    console.print(table)
+    if json_out is not None:
+        atomic_write_text(json_out, json.dumps({"rooms": rooms}, indent=2) + "\n")
+        console.print(f"Wrote {escape(str(json_out))}")

@@ -1,0 +1,154 @@
+"""Object placement (issue 6): the engine through the binding, checked independently.
+
+The reachability oracle is `mansion.eval.placement.reachable`, a shapely + numpy flood fill over
+the placed objects alone; it must agree with the engine, which claims an interaction cell for every
+object it kept.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from llm_replay import Replay
+
+from mansion.agents.llm import LLMClient
+from mansion.eval.placement import PAPER, ROOMS, footprint, reachable, score_room
+from mansion.exceptions import InvalidInputError
+from mansion.models.objects import ObjectPlan, RoomPlacement
+from mansion.placement import RoomSpec, furnish_room, furnish_rooms, plan_objects, room_kind, thor_objects
+from mansion.placement.assets import database
+from mansion.placement.llm import LLMObjectPlanner
+from shapely.geometry import Point, Polygon
+
+
+@pytest.fixture(scope="module", params=["bedroom", "classroom", "restaurant", "library"])
+def placed(request) -> tuple[str, RoomPlacement]:
+    name = request.param
+    room = ROOMS[name]
+    plan = plan_objects(name, name, room.polygon, "", seed=3)
+    return name, furnish_room(room, plan, seed=3)
+
+
+def test_paper_rooms_meet_the_issue(placed) -> None:
+    name, result = placed
+    score = score_room(result)
+    assert (score.ob, score.cn, score.rch) == (0, 0, 100.0), score.unreachable
+    floor, small = PAPER[name]
+    # one run is noisier than the ten-run mean the issue asks for; it still clears the paper
+    assert score.floor_obj >= floor and score.small_obj >= small, score
+    assert result.stats.seconds < 1.0
+
+
+def test_engine_interaction_cells_are_free_and_connected_for_the_oracle(placed) -> None:
+    _, result = placed
+    assert all(reachable(result))
+    poly = Polygon(result.polygon)
+    fps = [footprint(o) for o in result.objects]
+    for o, fp in zip(result.objects, fps):
+        p = Point(o.interaction)
+        assert poly.contains(p)
+        assert fp.distance(p) < 0.5
+        # the agent's disc at the interaction cell touches no object
+        assert min(f.distance(p) for f in fps) >= result.agent_radius - 1e-9
+
+
+def test_oracle_sees_a_blocked_object() -> None:
+    # an object walled in by a fake ring of boxes must be unreachable for the oracle too
+    room = ROOMS["bedroom"]
+    plan = ObjectPlan.model_validate({"room_id": "b", "room_type": "bedroom", "items": [
+        {"id": "safe", "object_type": "Safe", "tag": "edge", "max_width": 0.5},
+    ]})
+    result = furnish_room(room, plan, seed=0)
+    assert reachable(result) == [True]
+    o = result.objects[0]
+    cage = []
+    for k, (dx, dy) in enumerate([(1, 0), (-1, 0), (0, 1), (0, -1)]):
+        cx, cy = o.center[0] + dx * 0.8, o.center[1] + dy * 0.8
+        cage.append(o.model_copy(update={"id": f"wall{k}", "center": (cx, cy), "size": (1.9, 0.3, 1.0),
+                                         "yaw": 0.0 if dy else 90.0, "has_front": False}))
+    caged = result.model_copy(update={"objects": [o, *cage]})
+    assert reachable(caged)[0] is False
+
+
+def test_thor_objects_follow_the_house_json_conventions(placed) -> None:
+    _, result = placed
+    objs = thor_objects(result)
+    assert len(objs) == len(result.objects)
+    db = database()
+    known = {a.asset_id for assets in db.assets.values() for a in assets}
+    for o, src in zip(objs, result.objects):
+        assert o["assetId"] in known
+        assert o["position"] == {"x": src.center[0], "y": src.size[2] / 2, "z": src.center[1]}
+        assert o["rotation"]["y"] == src.yaw and isinstance(o["kinematic"], bool)
+        for c, child in zip(o.get("children", []), src.children):
+            assert math.isclose(c["position"]["y"], src.size[2] + child.size[2] / 2)
+            # a child stands on its parent's top
+            assert footprint(src).buffer(1e-6).contains(Point(child.center))
+    assert json.loads(json.dumps(objs)) == objs
+
+
+def test_same_seed_same_room_and_parallel_equals_serial() -> None:
+    room = ROOMS["classroom"]
+    plan = plan_objects("classroom", "classroom", room.polygon, seed=1)
+    a = furnish_room(room, plan, seed=5)
+    b = furnish_room(room, plan, seed=5)
+    strip = lambda r: r.model_dump(exclude={"stats"})  # noqa: E731
+    assert strip(a) == strip(b)
+    both = furnish_rooms([(room, plan), (ROOMS["bedroom"], plan_objects("b", "bedroom", ROOMS["bedroom"].polygon))], seed=5)
+    assert strip(both[0]) == strip(a)  # type: ignore[arg-type]
+
+
+def test_bad_input_is_a_typed_error_naming_the_room() -> None:
+    room = RoomSpec("den", [(0, 0), (4, 0), (4, 4), (0, 4)], [((1.0, 1.0), (2.0, 1.0))])
+    plan = plan_objects("den", "bedroom", room.polygon)
+    with pytest.raises(InvalidInputError, match="den"):
+        furnish_room(room, plan)
+    out = furnish_rooms([(room, plan)])
+    assert isinstance(out[0], InvalidInputError)
+    with pytest.raises(InvalidInputError, match="no asset"):
+        furnish_room(ROOMS["bedroom"], ObjectPlan(room_id="b", room_type="b", items=[
+            {"id": "x", "object_type": "Spaceship"}]))  # type: ignore[list-item]
+
+
+@pytest.mark.parametrize("room_type,kind", [
+    ("Classroom 2", "classroom"), ("reading_room", "library"), ("patient ward", "ward"),
+    ("main corridor", "circulation"), ("gift shop", "shop"), ("storage", "generic"),
+])
+def test_room_kinds(room_type: str, kind: str) -> None:
+    assert room_kind(room_type) == kind
+
+
+def test_every_room_kind_gives_a_valid_reachable_placement() -> None:
+    room = RoomSpec("r", [(0, 0), (7, 0), (7, 5), (0, 5)], [((3.0, 0.0), (4.0, 0.0))])
+    from mansion.placement.offline import ROOM_KINDS
+
+    jobs = [(room, plan_objects("r", kind, room.polygon, "office", seed=2)) for kind in ROOM_KINDS]
+    for res in furnish_rooms(jobs, seed=2):
+        assert isinstance(res, RoomPlacement)
+        s = score_room(res)
+        assert (s.ob, s.cn, s.rch) == (0, 0, 100.0)
+
+
+def test_llm_object_planner_replayed_through_the_sdk() -> None:
+    replay = Replay()
+    planner = LLMObjectPlanner(LLMClient(replay.client()))  # type: ignore[arg-type]
+    room = ROOMS["bedroom"]
+    plan = planner.plan("bedroom", "bedroom", room.polygon, "house")
+    # the first answer used a type AI2-THOR does not have; the retry carried the problem
+    assert replay.served == ["objects_bedroom.attempt1", "objects_bedroom"]
+    assert "KingBed" in json.dumps(replay.requests[1]["messages"][-1])
+    assert {i.object_type for i in plan.items} >= {"Bed", "SideTable", "Desk", "Chair"}
+    result = furnish_room(room, plan, seed=0)
+    s = score_room(result)
+    assert (s.ob, s.cn, s.rch) == (0, 0, 100.0) and s.floor_obj >= 6
+
+
+def test_reach_grid_matches_numpy_definition_on_an_empty_room() -> None:
+    # with nothing placed, the oracle's free space is the room shrunk by the radius
+    room = ROOMS["bedroom"]
+    res = furnish_room(room, ObjectPlan(room_id="b", room_type="b", items=[]))
+    assert res.objects == [] and reachable(res) == []
+    assert np.isclose(res.agent_radius, 0.25)
