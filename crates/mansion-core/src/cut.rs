@@ -75,9 +75,9 @@ impl Default for CutOptions {
             retries: 10,
             batch: 100,
             // the Python package's SolverSettings defaults, chosen by measurement there
-            gammas: vec![0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0],
+            gammas: vec![0.25, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0],
             r_base: 2.0,
-            k: 4.0,
+            k: 8.0,
             seed_separation: 2.0,
             fallback_samples: 400,
             min_contact: 2,

@@ -27,10 +27,10 @@ class EnergyWeights(BaseModel):
 
     The defaults were found by ``mansion tune-weights`` on the T2D development plans with even
     ids (30 random samples of the simplex, then 30 local perturbations of the best; seed 0),
-    starting from ratio 6, drift 12, the rest the authors' released values. On the held-out odd
-    ids they score micro-IoU 87.07 / macro-IoU 85.87 (all 500 plans: 87.29 / 86.08, no failure),
-    against 80.34 / 77.91 on the even ids for the authors' released values (ratio 6.0, seed 0.2,
-    wall 0.8, corner 3.0, no drift), which work on their 1 m grid. Seeds given as centroids are
+    starting from ratio 6, drift 12, the rest the authors' released values. With the default
+    :class:`SolverSettings` they score micro-IoU 87.04 / macro-IoU 85.86 on the held-out odd ids
+    (all 500 plans: 87.34 / 86.17, no failure), against 80.34 / 77.91 on the even ids for the
+    authors' released values (:meth:`paper`), which work on their 1 m grid. Seeds given as centroids are
     worth following closely: drift carries most of the weight. Other weights can be kept in a
     JSON file such as ``{"ratio": 6.0, "seed": 0.2, "drift": 0.0, "wall": 0.8, "corner": 3.0}``
     and read with :meth:`EnergyWeights.load`; keys left out keep their defaults.
@@ -81,27 +81,30 @@ class SolverSettings(BaseModel):
       centred on its seed until a wall or a neighbour stops it (so seeds act as centroids);
       ``"longest"`` grows the longest free side first, as in Lopes et al. (2010).
 
-    How the defaults were chosen (T2D development plans, even ids, hierarchical mode, the
-    measurements of ``mansion eval floorplan``; micro / macro IoU):
+    How the defaults were chosen (``mansion eval floorplan`` on the T2D development plans, even
+    ids, hierarchical mode, micro / macro IoU; and the solver's own benchmark, whose seeds come
+    from the offline heuristic planner):
 
-    - ``gammas`` start at 0.25, not 1: seeds are meant as centroids, and the first retry nearly
-      always wins, so its radius decides accuracy. Starting at 0.5 gave 83.48 / 81.50 and at 0.25
-      83.81 / 81.91 (k = 2, the paper's weights plus drift 12); 0.1 gave 83.62 / 81.73, no better.
-      The later, wider retries are for rounds whose first samples all fail the topology filter.
-    - ``k`` = 4: with γ₀ = 0.25, k = 0, 2, 4 gave 83.79 / 82.05, 83.81 / 81.91, 83.89 / 82.02
-      (within noise); 4 keeps some spread for large rooms.
-    - ``seed_separation`` = 2 cells: 1 and 2 gave identical scores; 2 keeps distinct seeds apart.
-    - ``fallback_samples`` = 400: the fallback never won a round on the 500 plans with these
-      settings; 400 costs as much as four retries and is kept for harder programs.
+    - ``gammas``: a narrow first retry (0.25), then the paper's sequence without its 3.5. Seeds
+      given as centroids gain from a small first radius: with the tuned weights, k = 8 and
+      γ = [0.25, 1, 1.25, …] scored 87.65 / 86.48, against 87.52 / 86.30 for k = 4 and
+      γ = [0.25, 0.5, 1, 1.5, 2, 3, …] and 87.33 / 86.01 (one failure) for γ₀ = 0.125. Guessed seeds
+      need the wider retries: on the 64 × 64 seven-room benchmark with heuristic seeds the
+      second retry wins (15 ms per solve), where k = 4 with the slow γ ramp needed six retries
+      (30 ms) and the paper's sequence two (10.6 ms).
+    - ``k`` = 8, the paper's value (see above; k = 0, 2, 4 were within noise on T2D).
+    - ``seed_separation`` = 2 cells: 1 and 2 gave identical T2D scores; 2 keeps seeds apart.
+    - ``fallback_samples`` = 400: the fallback never won a round on the 500 T2D plans; 400 costs
+      as much as four retries and is kept for harder programs.
     - ``growth`` = balanced: with the paper's weights and γ from 0.5, balanced growth scored
       78.24 / 76.01 in flat mode against 75.47 / 72.14 for the longest-side rule (first 150 plans).
     """
 
     model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
 
-    k: float = Field(default=4.0, ge=0.0)
+    k: float = Field(default=8.0, ge=0.0)
     gammas: list[float] = Field(
-        default_factory=lambda: [0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0]
+        default_factory=lambda: [0.25, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0]
     )
     seed_separation: float = Field(default=2.0, ge=0.0)
     fallback_samples: int = Field(default=400, ge=0)
