@@ -16,6 +16,7 @@ furnished, left empty, skipped (cores, circulation) or failed, with the reasons.
 from __future__ import annotations
 
 import argparse
+import re
 import statistics
 import sys
 import tempfile
@@ -31,6 +32,13 @@ from bench_generate import case, description  # noqa: E402
 from mansion.building import generate_building  # noqa: E402
 from mansion.exceptions import MansionError  # noqa: E402
 from mansion.scene import BuildingManifest, House, Problem, validate_path, write_scenes  # noqa: E402
+
+
+def _kind_of(reason: str) -> str:
+    """A reason without the ids and counts of its room, so alike reasons count together."""
+    reason = re.sub(r"\(\d+ candidates\)", "", reason.split(";")[0])
+    reason = re.sub(r"room [^:]+: ", "", reason)
+    return reason.split(": kept clear")[0].strip()
 
 
 class ObjectTally:
@@ -60,11 +68,8 @@ class ObjectTally:
                 self.rooms[r.status] += 1
                 if r.status == "furnished":
                     self.furnished_rooms.add((str(file), rid))
-                if r.reason and r.status != "skipped":
-                    # the reason without the room's own ids, so alike reasons count together
-                    self.reasons[f"{r.status}: {r.reason.split(':')[0] if 'room ' in r.reason else r.reason.split(';')[0]}"] += 1
-                elif r.status == "skipped" and r.reason:
-                    self.reasons[f"skipped: {r.reason.split(':')[0]}"] += 1
+                if r.reason:
+                    self.reasons[f"{r.status}: {_kind_of(r.reason)}"] += 1
         for p in problems:
             if p.rule == "object-in-room":
                 self.ob += 1
@@ -95,6 +100,7 @@ def main() -> int:
     args = ap.parse_args()
     failed, floors, scene_times = [], 0, []
     tally = ObjectTally()
+    began = time.perf_counter()
     with tempfile.TemporaryDirectory() as tmp:
         for seed in range(*args.seeds):
             kind, n = case(seed)
@@ -123,6 +129,7 @@ def main() -> int:
     )
     if not args.no_objects:
         print(tally.report())
+    print(f"total {time.perf_counter() - began:.0f} s (planning, layout, scenes, objects, validation)")
     if failed:
         print(f"failing seeds: {failed}")
     return 1 if failed else 0
