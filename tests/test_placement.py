@@ -152,3 +152,32 @@ def test_reach_grid_matches_numpy_definition_on_an_empty_room() -> None:
     res = furnish_room(room, ObjectPlan(room_id="b", room_type="b", items=[]))
     assert res.objects == [] and reachable(res) == []
     assert np.isclose(res.agent_radius, 0.25)
+
+
+def test_the_checks_flood_fill_matches_a_plain_breadth_first_search() -> None:
+    """The run-sweeping flood of mansion.placement.check against a cell-by-cell BFS."""
+    from collections import deque
+
+    import numpy as np
+
+    from mansion.placement.check import FreeSpace
+
+    rng = np.random.default_rng(5)
+    for _ in range(30):
+        h, w = int(rng.integers(1, 40)), int(rng.integers(1, 40))
+        free = rng.random((h, w)) < 0.6
+        seeds = rng.random((h, w)) < 0.02
+        space = FreeSpace(np.zeros(h * w), np.zeros(h * w), np.empty(h * w, dtype=object), (h, w),
+                          free.ravel(), free.ravel())
+        got = space.flood(seeds.ravel()).reshape(h, w)
+        want = np.zeros((h, w), dtype=bool)
+        queue = deque(zip(*np.nonzero(seeds & free)))
+        for y, x in queue:
+            want[y, x] = True
+        while queue:
+            y, x = queue.popleft()
+            for yy, xx in ((y + 1, x), (y - 1, x), (y, x + 1), (y, x - 1)):
+                if 0 <= yy < h and 0 <= xx < w and free[yy, xx] and not want[yy, xx]:
+                    want[yy, xx] = True
+                    queue.append((yy, xx))
+        assert (got == want).all()

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import copy
 import json
+import math
 import sys
 from pathlib import Path
 from typing import Any
@@ -143,10 +144,11 @@ def test_every_building_type_gives_valid_scenes(seed: int, tmp_path: Path) -> No
     building = generate_building(description(kind, floors), building_type=kind, floors=floors, seed=seed)
     manifest = write_scenes(building, tmp_path)
     assert validate_path(manifest) == []
-    scenes = build_scenes(building)
+    scenes = build_scenes(building, objects=False)
     for house, floor in zip(scenes.houses, building.floors, strict=True):
         # every access edge of the graph is a door or an opening, and doors carry real assets
         assert house.objects == []
+        assert house.metadata.mansion is not None and house.metadata.mansion.furnishing is None
         for door in house.doors:
             assert door.asset_id.startswith("Doorway")
         parts = {r.id: (r.metadata.part_of if r.metadata and r.metadata.part_of else r.id) for r in house.rooms}
@@ -346,3 +348,167 @@ def test_cli_render_and_schema(tmp_path: Path) -> None:
 def test_committed_json_schema_is_current() -> None:
     committed = Path(__file__).resolve().parents[1] / "docs" / "house.schema.json"
     assert json.loads(committed.read_text()) == house_json_schema(), "run: mansion schema --out docs/house.schema.json"
+
+
+# -- objects --------------------------------------------------------------------------------------
+
+
+def _objects(house: dict[str, Any], room: str) -> list[dict[str, Any]]:
+    return [o for o in house["objects"] if o["room"] == room]
+
+
+def test_golden_floors_are_furnished_around_their_doors(golden_house: dict[str, Any]) -> None:
+    house = House.model_validate(golden_house)
+    record = house.metadata.mansion
+    assert record is not None and record.furnishing is not None
+    rooms = record.furnishing.rooms
+    assert set(rooms) == {r.id for r in house.rooms}
+    # cores and circulation stay clear; the others hold what the record says
+    assert rooms["stair_1"].status == "skipped"
+    for rid, r in rooms.items():
+        assert len(_objects(golden_house, rid)) == r.objects
+        assert r.status != "failed" or r.objects == 0
+    ids = [o["id"] for o in golden_house["objects"]]
+    ids += [c["id"] for o in golden_house["objects"] for c in o.get("children", [])]
+    assert len(ids) == len(set(ids)) and len(ids) > 50
+    known = asset_ids()
+    assert all(o["assetId"] in known for o in golden_house["objects"])
+    assert any(o.get("children") for o in golden_house["objects"])
+    # every door records the room its leaf swings into
+    assert all(d["swingRoom"] in (d["room0"], d["room1"]) for d in golden_house["doors"])
+
+
+def test_no_object_in_a_door_swing_or_on_a_pose(golden_house: dict[str, Any]) -> None:
+    from shapely.geometry import box as square
+
+    from mansion.placement.check import footprint
+    from mansion.scene.entrances import room_entrances
+
+    house = House.model_validate(golden_house)
+    db = asset_ids()
+    fps = {
+        o.id: (o.room, footprint((o.position.x, o.position.z), db[o.asset_id]["boundingBox"]["x"],
+                                 db[o.asset_id]["boundingBox"]["z"], o.rotation.y))
+        for o in house.objects
+    }
+    for rid, ways in room_entrances(house).items():
+        poly = Polygon([(p.x, p.z) for p in next(r for r in house.rooms if r.id == rid).floor_polygon])
+        for e in ways:
+            if e.kind != "door" or not e.swings_here:
+                continue
+            # the square the leaf sweeps inside the room
+            (ax, az), (bx, bz) = e.a, e.b
+            zone = Polygon([e.a, e.b, (bx - (bz - az), bz + (bx - ax)), (ax - (bz - az), az + (bx - ax))])
+            if not poly.buffer(1e-6).covers(zone):
+                zone = Polygon([e.a, e.b, (bx + (bz - az), bz - (bx - ax)), (ax + (bz - az), az - (bx - ax))])
+            for oid, (room, fp) in fps.items():
+                if room == rid:
+                    assert fp.intersection(zone).area < 1e-6, (oid, e.id)
+    spawn = house.metadata.agent_poses["default"].position
+    spot = square(spawn.x - 0.25, spawn.z - 0.25, spawn.x + 0.25, spawn.z + 0.25)
+    assert all(not fp.intersects(spot) for _, fp in fps.values())
+
+
+def test_generation_without_objects_and_deterministic_objects() -> None:
+    building = golden_building()
+    bare = build_scenes(building, objects=False)
+    assert all(h.objects == [] for h in bare.houses)
+    again = build_scenes(building)
+    assert [h.to_dict() for h in again.houses] == [h.to_dict() for h in build_scenes(building).houses]
+
+
+def test_object_footprint_leaving_its_room(golden_house: dict[str, Any]) -> None:
+    h = copy.deepcopy(golden_house)
+    obj = max(h["objects"], key=lambda o: o["position"]["y"])
+    room = Polygon([(p["x"], p["z"]) for p in _first(h["rooms"], id=obj["room"])["floorPolygon"]])
+    # the centre stays inside, 5 cm from the wall; the footprint pokes through it
+    x0, _, _, _ = room.bounds
+    z = room.representative_point().y
+    obj["position"]["x"], obj["position"]["z"] = x0 + 0.05, z
+    assert room.covers(__import__("shapely").Point(x0 + 0.05, z))
+    assert named(validate_house(h), "object-in-room", obj["id"])
+
+
+def test_overlapping_objects_and_the_tucked_exception(golden_house: dict[str, Any]) -> None:
+    h = copy.deepcopy(golden_house)
+    tucked = next(o for o in h["objects"] if "tuckedUnder" in o)
+    table = _first(h["objects"], id=tucked["tuckedUnder"])
+    assert validate_house(h) == []  # the tucked chair overlaps its table, and may
+    del tucked["tuckedUnder"]
+    problems = validate_house(h)
+    assert any(p.rule == "object-overlap" and {p.element, table["id"]} >= {tucked["id"]} or
+               (p.rule == "object-overlap" and p.element == table["id"]) for p in problems)
+    h = copy.deepcopy(golden_house)
+    a, b = [o for o in h["objects"] if "tuckedUnder" not in o][:2]
+    b["position"]["x"], b["position"]["z"], b["room"] = a["position"]["x"], a["position"]["z"], a["room"]
+    assert any(p.rule == "object-overlap" and p.element in (a["id"], b["id"]) for p in validate_house(h))
+
+
+def test_child_off_its_receptacle(golden_house: dict[str, Any]) -> None:
+    h = copy.deepcopy(golden_house)
+    parent = next(o for o in h["objects"] if o.get("children"))
+    child = parent["children"][0]
+    child["position"]["y"] += 0.2
+    assert named(validate_house(h), "object-child", child["id"])
+    h = copy.deepcopy(golden_house)
+    parent = next(o for o in h["objects"] if o.get("children"))
+    child = parent["children"][0]
+    child["position"]["x"] += 3.0
+    assert named(validate_house(h), "object-child", child["id"])
+
+
+def test_object_blocking_a_doorway_makes_the_room_unreachable(golden_house: dict[str, Any]) -> None:
+    from mansion.scene.entrances import room_entrances
+
+    h = copy.deepcopy(golden_house)
+    house = House.model_validate(h)
+    ways = room_entrances(house)
+    # a furnished room with a single door: a wardrobe pushed against the doorway shuts it
+    rid = next(r for r, w in ways.items() if len(w) == 1 and len(_objects(h, r)) >= 3)
+    door = ways[rid][0]
+    room = Polygon([(p.x, p.z) for p in next(r for r in house.rooms if r.id == rid).floor_polygon])
+    (ax, az), (bx, bz) = door.a, door.b
+    mx, mz = (ax + bx) / 2, (az + bz) / 2
+    nx, nz = -(bz - az) / door.width, (bx - ax) / door.width
+    if not room.contains(__import__("shapely").Point(mx + nx * 0.3, mz + nz * 0.3)):
+        nx, nz = -nx, -nz
+    # Bed assets are about 2 m wide; turned along the wall it covers the whole doorway
+    bed = next(a for a, rec in asset_ids().items() if rec["objectType"] == "Dresser"
+               and rec["boundingBox"]["x"] >= door.width + 0.2 and rec["boundingBox"]["z"] <= 0.6)
+    depth = asset_ids()[bed]["boundingBox"]["z"]
+    yaw = math.degrees(math.atan2(nx, nz))
+    h["objects"].append({
+        "id": "blocker", "assetId": bed, "room": rid, "kinematic": True,
+        "position": {"x": mx + nx * (depth / 2 + 0.02), "y": 0.5, "z": mz + nz * (depth / 2 + 0.02)},
+        "rotation": {"x": 0, "y": yaw, "z": 0},
+    })
+    problems = validate_house(h)
+    unreached = {p.element for p in problems if p.rule == "object-reach"}
+    assert {o["id"] for o in _objects(h, rid)} - {"blocker"} <= unreached, problems
+
+
+def test_object_on_the_spawn(golden_house: dict[str, Any]) -> None:
+    h = copy.deepcopy(golden_house)
+    spawn = h["metadata"]["agentPoses"]["default"]["position"]
+    obj = h["objects"][0]
+    obj["position"]["x"], obj["position"]["z"] = spawn["x"], spawn["z"]
+    assert named(validate_house(h), "object-reach", "agentPoses.default")
+
+
+def test_a_room_that_cannot_be_furnished_is_recorded_not_fatal() -> None:
+    from mansion.scene import floor_house
+    from mansion.scene.furnish import FurnishJob, furnish_houses
+
+    house = floor_house(golden_building(), 0, objects=False)
+    # shut every door of one room (an agent no longer fits through any): it gets nothing
+    rid = next(r.id for r in house.rooms if r.id == "study")
+    for d in house.doors:
+        if rid in (d.room0, d.room1):
+            lo, hi = d.hole_polygon
+            hi.x = lo.x + 0.3
+    furnish_houses([FurnishJob(house, {}, 3)], "villa")
+    record = house.metadata.mansion.furnishing
+    assert record.rooms[rid].status == "failed" and "wide" in (record.rooms[rid].reason or "")
+    assert rid in record.failed
+    assert not [o for o in house.objects if o.room == rid]
+    assert any(r.status == "furnished" for r in record.rooms.values())

@@ -102,10 +102,8 @@ fn library() -> PlacementRequest {
     PlacementRequest {
         room_id: "library".into(),
         polygon: LIBRARY.to_vec(),
-        doors: vec![DoorSpec {
-            a: [8.5, 0.0],
-            b: [9.5, 0.0],
-        }],
+        doors: vec![DoorSpec::swinging([8.5, 0.0], [9.5, 0.0])],
+        keep_clear: Vec::new(),
         items,
         options: PlaceOptions::default(),
     }

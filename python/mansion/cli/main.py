@@ -123,9 +123,11 @@ def generate(
     seed: Annotated[int, typer.Option(help="Random seed; the same seed and inputs give the same building.")] = 0,
     scenes: Annotated[bool, typer.Option("--scenes/--no-scenes", help="Write AI2-THOR scenes (DIR/scenes/).")] = True,
     render: Annotated[bool, typer.Option("--render/--no-render", help="Draw the scenes (DIR/scenes/floor_<k>.png).")] = True,
+    objects: Annotated[bool, typer.Option("--objects/--no-objects", help="Furnish every room of the scenes (offline object plans, reachable placement).")] = True,
 ) -> None:
     """Generate a multi-floor building: DIR/building.json, DIR/floor_<k>.png, DIR/overview.png,
-    and its AI2-THOR scenes: DIR/scenes/floor_<k>.json, DIR/scenes/manifest.json and their pictures."""
+    and its AI2-THOR scenes, furnished: DIR/scenes/floor_<k>.json, DIR/scenes/manifest.json and
+    their pictures."""
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
     from mansion.building import generate_building, plot_building, plot_floors
@@ -155,7 +157,7 @@ def generate(
                 from mansion.scene import write_scenes
 
                 bar.update(task, description="writing scenes…")
-                manifest = write_scenes(building, out / "scenes")
+                manifest = write_scenes(building, out / "scenes", objects=objects)
                 if render:
                     from mansion.scene.render import render_folder
 
@@ -189,6 +191,29 @@ def generate(
     console.print(f"Wrote {escape(str(json_path))}, {len(pictures)} floor pictures and {escape(str(overview))}")
     if manifest is not None:
         console.print(f"Scenes: {escape(str(manifest.parent))}/floor_<k>.json and {escape(str(manifest))}")
+        if objects:
+            console.print(_furnishing_summary(manifest))
+
+
+def _furnishing_summary(manifest_path: Path) -> str:
+    """One line on the objects of a building's scenes, read back from the written floors."""
+    from mansion.scene import BuildingManifest, House
+
+    manifest = BuildingManifest.load(manifest_path)
+    count = small = furnished = 0
+    failed: list[str] = []
+    for floor in manifest.floors:
+        house = House.load(manifest_path.parent / floor.house)
+        count += len(house.objects)
+        small += sum(len(o.children) for o in house.objects)
+        record = house.metadata.mansion.furnishing if house.metadata.mansion else None
+        if record is not None:
+            furnished += sum(r.status == "furnished" for r in record.rooms.values())
+            failed += [f"{floor.index}:{r}" for r in record.failed]
+    line = f"Objects: {count} floor objects and {small} small ones in {furnished} rooms"
+    if failed:
+        line += f"; {len(failed)} rooms could not be furnished ({escape(', '.join(failed))}; see metadata.mansion.furnishing)"
+    return line
 
 
 @app.command()

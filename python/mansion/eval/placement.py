@@ -7,23 +7,22 @@ The metrics are computed here from the placed objects alone, independently of th
   stool tucked under the table or desk it is paired with;
 - #Rch: the share of floor objects with a cell of the agent's free space, connected to the door,
   within 0.5 m of the footprint (on its front side when it has one). The free space is rebuilt
-  here with shapely and flooded with numpy: a cell is free when its centre is in the room and at
-  least the agent's radius from every wall (the outline without the door openings) and object.
+  here with shapely and flooded with numpy (:mod:`mansion.placement.check`) from the cells within
+  0.5 m in front of the door: a cell is free when its centre is in the room and at least the
+  agent's radius from every wall (the outline without the door openings) and object.
 """
 
 from __future__ import annotations
 
-import math
 import time
 from dataclasses import dataclass, field
 
 import numpy as np
-import shapely
-from shapely.geometry import LineString, MultiLineString, Polygon, box
-from shapely.affinity import rotate, translate
+from shapely.geometry import Polygon
 
 from mansion.models.objects import ObjectPlan, PlacedObject, RoomPlacement
-from mansion.placement.assets import TUCKABLE
+from mansion.placement import check
+from mansion.placement.assets import TABLES, TUCKABLE
 from mansion.placement.offline import plan_objects
 from mansion.placement.place import PlaceOptions, RoomSpec, furnish_room
 
@@ -49,85 +48,25 @@ PAPER: dict[str, tuple[float, float]] = {
     "bedroom": (13.4, 9.2), "classroom": (37.5, 19.8), "restaurant": (52.5, 25.6), "library": (54.3, 34.3),
 }
 
-_TABLES = frozenset({"Desk", "DiningTable", "CoffeeTable", "SideTable", "CounterTop"})
-
-
 def footprint(o: PlacedObject) -> Polygon:
     """The object's footprint in plan coordinates (yaw 0 faces +y, 90 faces +x)."""
-    w, d = o.size[0], o.size[1]
-    shape = rotate(box(-w / 2, -d / 2, w / 2, d / 2), -o.yaw, origin=(0, 0))
-    return translate(shape, o.center[0], o.center[1])
-
-
-def _walls(room: RoomSpec) -> MultiLineString:
-    outline = LineString([*room.polygon, room.polygon[0]])
-    solid = outline
-    for a, b in room.doors:
-        solid = solid.difference(LineString([a, b]).buffer(1e-9, cap_style="flat"))
-    parts = [g for g in getattr(solid, "geoms", [solid]) if g.length > 0]
-    return MultiLineString([list(g.coords) for g in parts])
-
-
-def _zones(room: RoomSpec) -> list[Polygon]:
-    poly = Polygon(room.polygon)
-    out = []
-    for a, b in room.doors:
-        ax, ay = a
-        dx, dy = b[0] - ax, b[1] - ay
-        w = math.hypot(dx, dy)
-        nx, ny = -dy / w, dx / w
-        mid = ((ax + b[0]) / 2 + nx * 1e-3, (ay + b[1]) / 2 + ny * 1e-3)
-        if not poly.contains(shapely.Point(mid)):
-            nx, ny = -nx, -ny
-        out.append(Polygon([a, b, (b[0] + nx * w, b[1] + ny * w), (ax + nx * w, ay + ny * w)]))
-    return out
+    return check.footprint((o.center[0], o.center[1]), o.size[0], o.size[1], o.yaw)
 
 
 def reachable(result: RoomPlacement, cell: float = 0.05, reach: float = 0.5) -> list[bool]:
     """Per floor object, whether the agent reaches it (the definition in the module doc)."""
     room = RoomSpec(result.room_id, list(result.polygon), list(result.doors))
-    poly = Polygon(room.polygon)
-    x0, y0, x1, y1 = poly.bounds
-    w, h = math.ceil((x1 - x0) / cell), math.ceil((y1 - y0) / cell)
-    xs = x0 + (np.arange(w) + 0.5) * cell
-    ys = y0 + (np.arange(h) + 0.5) * cell
-    gx, gy = np.meshgrid(xs, ys)
-    px, py = gx.ravel(), gy.ravel()
-    inside = shapely.contains_xy(poly, px, py)
-    pts = shapely.points(px, py)
-    r = result.agent_radius
-    free = inside & (shapely.distance(pts, _walls(room)) >= r)
     fps = [footprint(o) for o in result.objects]
-    if fps:
-        free &= shapely.distance(pts, shapely.union_all(fps)) >= r
-    free = free.reshape(h, w)
-    seeds = np.zeros_like(free)
-    zones = _zones(room)
-    if zones:
-        seeds = (shapely.contains_xy(zones[0], px, py) | shapely.intersects_xy(zones[0], px, py)).reshape(h, w)
-    reached = seeds & free
-    # flood fill by repeated 4-neighbour dilation inside the free cells
-    while True:
-        grown = reached.copy()
-        grown[1:, :] |= reached[:-1, :]
-        grown[:-1, :] |= reached[1:, :]
-        grown[:, 1:] |= reached[:, :-1]
-        grown[:, :-1] |= reached[:, 1:]
-        grown &= free
-        if (grown == reached).all():
-            break
-        reached = grown
-    flat = reached.ravel()
-    out = []
-    for o, fp in zip(result.objects, fps):
-        near = flat & (shapely.distance(pts, fp) < reach)
-        if o.has_front and near.any():
-            yaw = math.radians(o.yaw)
-            fx, fy = math.sin(yaw), math.cos(yaw)
-            ahead = (px - o.center[0]) * fx + (py - o.center[1]) * fy >= o.size[1] / 2 - 1e-9
-            near &= ahead
-        out.append(bool(near.any()))
-    return out
+    space = check.FreeSpace.build(room.polygon, room.segments, fps, result.agent_radius, cell)
+    # entered through the doorway: the cells just inside the first door
+    seeds = np.zeros_like(space.free)
+    if room.segments:
+        seeds = space.in_front_of(*room.segments[0], reach)
+    reached = space.flood(seeds)
+    return [
+        space.reaches(reached, fp, reach, ((o.center[0], o.center[1]), o.yaw, o.size[1]) if o.has_front else None)
+        for o, fp in zip(result.objects, fps)
+    ]
 
 
 @dataclass
@@ -152,8 +91,8 @@ def score_room(result: RoomPlacement) -> RoomScore:
             b = result.objects[j]
             if fps[i].intersection(fps[j]).area <= 1e-4:
                 continue
-            tucked = (a.tucked_under == b.id and a.object_type in TUCKABLE and b.object_type in _TABLES) or (
-                b.tucked_under == a.id and b.object_type in TUCKABLE and a.object_type in _TABLES
+            tucked = (a.tucked_under == b.id and a.object_type in TUCKABLE and b.object_type in TABLES) or (
+                b.tucked_under == a.id and b.object_type in TUCKABLE and a.object_type in TABLES
             )
             cn += not tucked
     reach = reachable(result)

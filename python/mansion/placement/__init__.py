@@ -3,21 +3,28 @@ placement engine with guaranteed reachability, and export to AI2-THOR ``objects`
 
 Stages: an object planner (:func:`plan_objects` offline, :class:`LLMObjectPlanner` with Claude)
 writes an :class:`~mansion.models.objects.ObjectPlan`; :func:`furnish_room` picks assets by size
-and runs the engine; :func:`thor_objects` exports; :func:`furnish_floor` does every room of a
-floor of a :class:`mansion.Building`.
+and runs the engine; :func:`thor_objects` exports. The scene stage furnishes every room of a
+building's floors around their real doors (:mod:`mansion.scene.furnish`).
 """
 
-from mansion.placement.floor import furnish_floor, layout_doors
 from mansion.placement.offline import plan_objects, room_kind
-from mansion.placement.place import PlaceOptions, RoomSpec, furnish_room, furnish_rooms, thor_objects
+from mansion.placement.place import (
+    Entrance,
+    PlaceOptions,
+    RoomSpec,
+    Spot,
+    furnish_room,
+    furnish_rooms,
+    thor_objects,
+)
 
 __all__ = [
+    "Entrance",
     "PlaceOptions",
     "RoomSpec",
-    "furnish_floor",
+    "Spot",
     "furnish_room",
     "furnish_rooms",
-    "layout_doors",
     "plan_objects",
     "room_kind",
     "thor_objects",

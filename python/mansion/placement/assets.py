@@ -18,7 +18,7 @@ from typing import Any
 
 from mansion.exceptions import InvalidInputError
 
-__all__ = ["Asset", "AssetDatabase", "FRONT_TYPES", "TUCKABLE", "database"]
+__all__ = ["Asset", "AssetDatabase", "FRONT_TYPES", "TABLES", "TUCKABLE", "database"]
 
 #: Types used from one side: the agent must reach their front (doors, drawers, shelves, screens).
 FRONT_TYPES = frozenset({
@@ -27,6 +27,8 @@ FRONT_TYPES = frozenset({
 })
 #: Seats that may be pushed under their table (the collision count exempts them).
 TUCKABLE = frozenset({"Chair", "Stool"})
+#: What a tuckable seat may be pushed under.
+TABLES = frozenset({"Desk", "DiningTable", "CoffeeTable", "SideTable", "CounterTop"})
 
 
 @dataclass(frozen=True)

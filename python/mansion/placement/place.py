@@ -18,7 +18,16 @@ from mansion.exceptions import InfeasibleLayoutError, InvalidInputError, Mansion
 from mansion.models.objects import ObjectPlan, RoomPlacement
 from mansion.placement.assets import FRONT_TYPES, AssetDatabase, database
 
-__all__ = ["PlaceOptions", "RoomSpec", "build_request", "furnish_room", "furnish_rooms", "thor_objects"]
+__all__ = [
+    "Entrance",
+    "Spot",
+    "PlaceOptions",
+    "RoomSpec",
+    "build_request",
+    "furnish_room",
+    "furnish_rooms",
+    "thor_objects",
+]
 
 Point = tuple[float, float]
 
@@ -43,13 +52,53 @@ class PlaceOptions:
         return {**self.__dict__, "seed": seed}
 
 
+@dataclass(frozen=True)
+class Entrance:
+    """A way into the room: the segment ``a``–``b`` of its outline, kept free ``depth`` metres
+    into the room. ``depth`` None is a door whose leaf swings into this room (the engine keeps
+    the square of its width free); a door swinging into the other room, or an opening without a
+    leaf, needs only an apron to step through."""
+
+    a: Point
+    b: Point
+    depth: float | None = None
+    #: False: the zone stays free but need not connect to the other entrances (a door the empty
+    #: room already cuts off, behind a neck narrower than the agent).
+    entrance: bool = True
+
+
+@dataclass(frozen=True)
+class Spot:
+    """A spot kept free (a square of the room's ``clear_size``), reachable from the entrances
+    unless ``entrance`` is False."""
+
+    center: Point
+    entrance: bool = True
+
+
 @dataclass
 class RoomSpec:
-    """A room to furnish: outline and doors (each a segment on the outline) in metres."""
+    """A room to furnish: outline and entrances (each a segment on the outline, a bare segment
+    being a door that swings into the room) in metres, and spots to keep free and reachable
+    (where an agent spawns or lands), each a square of side ``clear_size``."""
 
     room_id: str
     polygon: list[Point]
-    doors: list[tuple[Point, Point]] = field(default_factory=list)
+    doors: list[tuple[Point, Point] | Entrance] = field(default_factory=list)
+    keep_clear: list[Point | Spot] = field(default_factory=list)
+    clear_size: float = 0.6
+
+    @property
+    def spots(self) -> list[Spot]:
+        return [p if isinstance(p, Spot) else Spot(p) for p in self.keep_clear]
+
+    @property
+    def entrances(self) -> list[Entrance]:
+        return [d if isinstance(d, Entrance) else Entrance(d[0], d[1]) for d in self.doors]
+
+    @property
+    def segments(self) -> list[tuple[Point, Point]]:
+        return [(e.a, e.b) for e in self.entrances]
 
 
 def build_request(
@@ -93,7 +142,14 @@ def build_request(
     return {
         "room_id": room.room_id,
         "polygon": [list(p) for p in room.polygon],
-        "doors": [{"a": list(a), "b": list(b)} for a, b in room.doors],
+        "doors": [
+            {"a": list(e.a), "b": list(e.b), "depth": e.depth, "entrance": e.entrance}
+            for e in room.entrances
+        ],
+        "keep_clear": [
+            {"center": list(p.center), "size": room.clear_size, "entrance": p.entrance}
+            for p in room.spots
+        ],
         "items": items,
         "options": opts.to_json(seed),
     }
@@ -104,7 +160,7 @@ def _result(room: RoomSpec, request: dict[str, Any], raw: str) -> RoomPlacement:
     return RoomPlacement.model_validate({
         **data,
         "polygon": room.polygon,
-        "doors": room.doors,
+        "doors": room.segments,
         "agent_radius": request["options"]["agent_radius"],
     })
 
@@ -131,9 +187,14 @@ def furnish_rooms(
     jobs: list[tuple[RoomSpec, ObjectPlan]],
     seed: int = 0,
     options: PlaceOptions | None = None,
+    seeds: list[int] | None = None,
 ) -> list[RoomPlacement | MansionError]:
-    """Many rooms at once, in parallel in the core; a room that fails gives its error instead."""
-    requests = [build_request(r, p, seed + k, options) for k, (r, p) in enumerate(jobs)]
+    """Many rooms at once, in parallel in the core; a room that fails gives its error instead.
+    Room ``k`` draws from ``seeds[k]`` when given, else from ``seed + k``."""
+    if seeds is not None and len(seeds) != len(jobs):
+        raise InvalidInputError(f"{len(seeds)} seeds for {len(jobs)} rooms")
+    per_room = seeds if seeds is not None else [seed + k for k in range(len(jobs))]
+    requests = [build_request(r, p, s, options) for (r, p), s in zip(jobs, per_room)]
     raws = native().place_rooms([json.dumps(q) for q in requests])
     out: list[RoomPlacement | MansionError] = []
     for (room, _), request, raw in zip(jobs, requests, raws):
@@ -148,13 +209,19 @@ def furnish_rooms(
 
 def thor_objects(placement: RoomPlacement, db: AssetDatabase | None = None) -> list[dict[str, Any]]:
     """AI2-THOR house JSON ``objects`` entries: plan (x, y) → scene (x, z), y up, the position at
-    the bounding-box centre, rotation about y in degrees; small objects as ``children``."""
+    the bounding-box centre, rotation about y in degrees; small objects as ``children``.
+
+    Ids are ``<room id>|<object id>``, unique in a house since room ids are. Two keys the loader
+    ignores ride along for the checks (``mansion validate``): ``room``, and ``tuckedUnder`` on a
+    chair or stool pushed under the table or desk it is paired with (they may overlap)."""
     db = db or database()
+    rid = placement.room_id
     out = []
     for o in placement.objects:
         children = [
             {
-                "id": f"{placement.room_id}|{c.id}",
+                "id": f"{rid}|{c.id}",
+                "room": rid,
                 "assetId": c.asset_id,
                 "kinematic": bool(db.kinematic.get(c.object_type, False)),
                 "position": {"x": c.center[0], "y": c.elevation + c.size[2] / 2, "z": c.center[1]},
@@ -163,12 +230,15 @@ def thor_objects(placement: RoomPlacement, db: AssetDatabase | None = None) -> l
             for c in o.children
         ]
         entry: dict[str, Any] = {
-            "id": f"{placement.room_id}|{o.id}",
+            "id": f"{rid}|{o.id}",
+            "room": rid,
             "assetId": o.asset_id,
             "kinematic": bool(db.kinematic.get(o.object_type, False)),
             "position": {"x": o.center[0], "y": o.size[2] / 2, "z": o.center[1]},
             "rotation": {"x": 0, "y": o.yaw, "z": 0},
         }
+        if o.tucked_under is not None:
+            entry["tuckedUnder"] = f"{rid}|{o.tucked_under}"
         if children:
             entry["children"] = children
         out.append(entry)

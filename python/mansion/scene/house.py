@@ -39,6 +39,7 @@ __all__ = [
     "CoreRecord",
     "Door",
     "FloorRecord",
+    "Furnishing",
     "House",
     "HouseMetadata",
     "HouseObject",
@@ -47,6 +48,7 @@ __all__ = [
     "ProceduralParameters",
     "Roof",
     "Room",
+    "RoomFurnishing",
     "RoomMetadata",
     "ShadowParameters",
     "Vec3",
@@ -168,6 +170,12 @@ class Wall(_Thor):
     thickness: float | None = None
     layer: str | None = None
 
+    def segment(self) -> tuple[tuple[float, float], tuple[float, float]]:
+        """The wall's foot p0 → p1 on the floor plane (x, z), read as the loader reads it: the
+        two lowest points of ``polygon``, in their order."""
+        pts = sorted(self.polygon, key=lambda p: p.y)
+        return (pts[0].x, pts[0].z), (pts[1].x, pts[1].z)
+
 
 class _Hole(_Thor):
     """What doors and windows share (``WallRectangularHole``)."""
@@ -191,7 +199,11 @@ class _Hole(_Thor):
 
 
 class Door(_Hole):
-    pass
+    swing_room: str | None = Field(
+        default=None,
+        description="Ours: the room the leaf swings into (the furniture keeps the square of the "
+        "door's width free there, an apron on the other side).",
+    )
 
 
 class Window(_Hole):
@@ -213,6 +225,10 @@ class HouseObject(_Thor):
     kinematic: bool = True
     children: list[HouseObject] = Field(default_factory=list)
     room: str | None = None
+    tucked_under: str | None = Field(
+        default=None,
+        description="Ours: the table or desk this chair or stool is pushed under (they may overlap).",
+    )
     bounding_box: BoundingBox | None = None
     layer: str | None = None
     openness: float | None = None
@@ -260,6 +276,31 @@ class Roof(_Thor):
     asset_id: str | None = None
 
 
+class RoomFurnishing(_Thor):
+    """How one room was furnished: ``furnished`` (objects placed), ``empty`` (the engine placed
+    nothing of its plan), ``skipped`` (a core or circulation, left clear on purpose) or
+    ``failed`` (the engine could not furnish it, e.g. its entrances do not reach each other;
+    the room keeps no objects)."""
+
+    status: Literal["furnished", "empty", "skipped", "failed"]
+    reason: str | None = None
+    objects: int = Field(default=0, ge=0)
+    small_objects: int = Field(default=0, ge=0)
+    dropped: int = Field(default=0, ge=0, description="Plan copies the engine could not place.")
+
+
+class Furnishing(_Thor):
+    """Our record of the floor's object placement."""
+
+    planner: str = "offline"
+    agent_radius: float = Field(gt=0.0)
+    rooms: dict[str, RoomFurnishing] = Field(default_factory=dict)
+
+    @property
+    def failed(self) -> list[str]:
+        return sorted(r for r, f in self.rooms.items() if f.status == "failed")
+
+
 class FloorRecord(_Thor):
     """Our record of which floor of which building this house is."""
 
@@ -270,6 +311,7 @@ class FloorRecord(_Thor):
     ceiling_height: float = Field(gt=0.0)
     hub: str = Field(description="Id of the floor's circulation hub (the agent's start room).")
     copy_of: int | None = None
+    furnishing: Furnishing | None = None
 
 
 class HouseMetadata(_Thor):

@@ -5,7 +5,8 @@ Per floor: rooms from the layout's polygons (cores included, with their core rec
 the floor's interfaces (two one-sided walls per interface, each wall piece carrying at most one
 hole), doors and openings from the graph's access edges, windows in exterior walls, materials
 matched to the room cards, a point light per room and a sun, a skybox for the building, and an
-agent spawn on a free cell of the hub. Objects stay empty: placement (issue 6) fills them.
+agent spawn on a free cell of the hub. Then every room is furnished around those doors
+(:mod:`mansion.scene.furnish`, the placement engine of issue 6).
 """
 
 from __future__ import annotations
@@ -18,7 +19,9 @@ from shapely.geometry import Point, Polygon
 
 from mansion.exceptions import InvalidBuildingError, MansionError
 from mansion.models.building import Building, Floor
+from mansion.placement.place import PlaceOptions
 from mansion.scene.databases import skyboxes
+from mansion.scene.furnish import FurnishJob, furnish_houses
 from mansion.scene.house import (
     HOUSE_SCHEMA,
     AgentPose,
@@ -102,13 +105,20 @@ class _FloorParts:
     house: House
     plan: PassagePlan
     interfaces: list[Interface]
+    floor: Floor
+    #: Each room of the house (a part of a layout room) → the layout room.
+    owner: dict[str, str]
 
 
 class _WallBuilder:
     """Cuts every interface into wall pieces, one hole at most per piece, and emits both sides."""
 
-    def __init__(self, floor: Floor, height: float, materials: dict[str, str], facade: str):
+    def __init__(
+        self, floor: Floor, height: float, materials: dict[str, str], facade: str,
+        owner: dict[str, str],
+    ):
         self.floor, self.height, self.materials, self.facade = floor, height, materials, facade
+        self.owner = owner
         self.count: dict[str, int] = {}
         self.walls: list[Wall] = []
         self.doors: list[Door] = []
@@ -151,11 +161,13 @@ class _WallBuilder:
         centre = Vec3(x=(lo.x + hi.x) / 2, y=(lo.y + hi.y) / 2, z=0.0)
         if g.kind == "door":
             assert f.other is not None
+            # the feature names the layout room; the door names the part of it on its side
+            swing = f.room if self.owner[f.room] == g.swing else f.other
             self.doors.append(
                 Door(
                     id=g.id, asset_id=g.asset_id, room0=f.room, room1=f.other, wall0=wall0,
                     wall1=wall1, hole_polygon=[lo, hi], asset_position=centre, openable=True,
-                    openness=1.0,
+                    openness=1.0, swing_room=swing,
                 )
             )
         else:
@@ -203,7 +215,7 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
     floors_mat = {p.id: floor_material(card_text(p.id, "floor_material")).name for p in parts}
     walls_mat = {p.id: wall_material(card_text(p.id, "wall_material")).name for p in parts}
     facade = wall_material(building.palette.style + " facade render").name
-    builder = _WallBuilder(floor, height, walls_mat, facade)
+    builder = _WallBuilder(floor, height, walls_mat, facade, owner)
     by_interface: dict[int, list[Feature]] = {}
     for g in plan.features:
         by_interface.setdefault(g.interface, []).append(g)
@@ -258,7 +270,7 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
             ),
         ),
     )
-    return _FloorParts(house, plan, interfaces)
+    return _FloorParts(house, plan, interfaces, floor, owner)
 
 
 def _core_record(
@@ -310,15 +322,36 @@ class BuildingScenes:
     manifest: BuildingManifest
 
 
-def floor_house(building: Building, index: int) -> House:
-    """The house of floor ``index`` alone."""
-    return _floor_parts(building, building.floors[index], ceiling_height(building)).house
+def _furnish(
+    building: Building, parts: list[_FloorParts], options: PlaceOptions | None
+) -> None:
+    jobs = [
+        FurnishJob(p.house, {part: kinds[room] for part, room in p.owner.items()}, building.seed)
+        for p in parts
+        for kinds in [{r.id: r.room_type for r in p.floor.layout.rooms}]
+    ]
+    furnish_houses(jobs, building.program.building_type, options)
 
 
-def build_scenes(building: Building) -> BuildingScenes:
-    """Every floor's house JSON and the building manifest."""
+def floor_house(
+    building: Building, index: int, *, objects: bool = True, options: PlaceOptions | None = None
+) -> House:
+    """The house of floor ``index`` alone (furnished unless ``objects`` is False)."""
+    parts = _floor_parts(building, building.floors[index], ceiling_height(building))
+    if objects:
+        _furnish(building, [parts], options)
+    return parts.house
+
+
+def build_scenes(
+    building: Building, *, objects: bool = True, options: PlaceOptions | None = None
+) -> BuildingScenes:
+    """Every floor's house JSON and the building manifest. With ``objects`` (the default) every
+    room is furnished (:mod:`mansion.scene.furnish`); ``options`` tunes the placement engine."""
     height = ceiling_height(building)
     parts = [_floor_parts(building, f, height) for f in building.floors]
+    if objects:
+        _furnish(building, parts, options)
     floors = [
         ManifestFloor(
             index=f.index, house=floor_file(f.index), elevation=f.index * (height + SLAB),

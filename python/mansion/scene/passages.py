@@ -69,6 +69,8 @@ class Feature:
     y0: float
     y1: float
     asset_id: str
+    #: The layout room a door's leaf swings into (None for windows).
+    swing: str | None = None
 
 
 @dataclass(frozen=True)
@@ -138,6 +140,7 @@ class _Planner:
         self.floor, self.interfaces, self.seed, self.ceiling = floor, interfaces, seed, ceiling
         self.owner, self.parts = owner, parts
         self.plan = PassagePlan()
+        self.depth = _depths(floor)
         self.areas = {r.id: r.area for r in floor.layout.rooms}
         self.doors = 0
         # The parts of one room (a room with a hole, cut in two) are open to each other.
@@ -171,6 +174,18 @@ class _Planner:
                 return t
         return f.length / 2
 
+    def swing_into(self, a: str, b: str) -> str:
+        """Which of the two rooms a door's leaf swings into: a stair or lift core (the way out,
+        as egress doors open), else the room farther from the hub (a room off a corridor opens
+        inward and the corridor stays clear), else the smaller room."""
+        for r in (a, b):
+            if self.floor.graph.node(r).is_core:
+                return r
+        da, db = self.depth.get(a, 1 << 30), self.depth.get(b, 1 << 30)
+        if da != db:
+            return a if da > db else b
+        return min((a, b), key=lambda r: (self.areas.get(r, 0.0), r))
+
     def door(self, a: str, b: str, reason: str) -> None:
         runs = self.shared(a, b)
         i = max(runs, key=lambda k: (self.interfaces[k].length, -k))
@@ -194,7 +209,7 @@ class _Planner:
         door_id = f"door|{self.floor.index}|{self.doors}"
         self.plan.features.append(
             Feature(door_id, "door", i, x0 - margin, x1 + margin, x0, x1, 0.0, asset.height,
-                    asset.asset_id)
+                    asset.asset_id, swing=self.swing_into(a, b))
         )
         self.plan.passages.append(Passage("door", a, b, reason, door_id))
 
@@ -289,10 +304,9 @@ def plan_passages(
     """Doors, openings and windows of one floor. ``owner`` maps each part (the interfaces'
     rooms) to its layout room; ``parts`` gives each part's polygon."""
     p = _Planner(floor, interfaces, owner, parts, seed, ceiling)
-    depth = _depths(floor)
     for e in floor.graph.edges:
         if e.kind == "access":
-            p.passage(e.source, e.target, _is_open(floor, e.source, e.target, depth), "graph edge")
+            p.passage(e.source, e.target, _is_open(floor, e.source, e.target, p.depth), "graph edge")
     p.connect_all()
     p.windows(ceiling)
     return p.plan

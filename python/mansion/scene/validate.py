@@ -18,7 +18,17 @@ Every rule here is one the loader or the scene's users depend on (docs/HOUSE_JSO
 - ``asset-position``: a hole's ``assetPosition`` is the hole's centre;
 - ``asset-id``: door, window and object assets exist in AI2-THOR's asset database, doors are
   doorways and windows windows; materials exist in its material database;
-- ``object-in-room``: every object's centre lies inside a room (its own room when it names one);
+- ``object-in-room``: every object's centre lies inside a room (its own room when it names one)
+  and its footprint (the asset's bounding box, turned by its rotation) within that room, to 1 cm;
+- ``object-overlap``: no two floor objects of a room overlap by more than 1e-4 m², except a chair
+  or stool tucked under (``tuckedUnder``) the table or desk it is paired with;
+- ``object-child``: a small object lies on its receptacle: inside its footprint (1 cm), its
+  bottom on the receptacle's top;
+- ``object-reach``: an independent flood fill over the room's free space (the agent's radius,
+  0.25 m unless the floor records another, from every solid wall and object) from the cells just
+  inside its first door or opening an agent passes: every other such entrance is reached, every
+  object has a reached cell within 0.5 m of its footprint (in front of it when it is used from
+  one side), and no object stands on an agent pose;
 - ``reachable``: every room is reached from the hub through doors and empty walls, and every agent
   pose stands inside a room.
 
@@ -39,18 +49,46 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from pydantic import ValidationError
 from shapely.geometry import Point, Polygon
 from shapely.strtree import STRtree
 
 from mansion.exceptions import InvalidInputError
 from mansion.scene.databases import asset_ids, material_names, skyboxes
-from mansion.scene.house import HOUSE_SCHEMA, House, Vec3, Wall
+from mansion.placement import check
+from mansion.placement.assets import FRONT_TYPES, TABLES, TUCKABLE
+from mansion.scene.entrances import room_entrances
+from mansion.scene.house import HOUSE_SCHEMA, House, HouseObject, Vec3, Wall
 from mansion.scene.manifest import BuildingManifest
 
 __all__ = ["Problem", "validate_building", "validate_house", "validate_path"]
 
 EPS = 1e-4
+#: An object's footprint may leave its room by this much (issue 6's #OB: 1 cm).
+OBJECT_TOLERANCE = 0.01
+#: Two floor objects overlap when they share more than this (m², issue 6's #CN).
+OVERLAP_AREA = 1e-4
+#: The agent reaches an object from a free cell this close to its footprint (m).
+REACH = 0.5
+#: The agent's radius when the house records none (AI2-THOR's agents fit in 0.25 m).
+AGENT_RADIUS = 0.25
+
+
+@dataclass(frozen=True)
+class _Placed:
+    """An object with its type and footprint from AI2-THOR's asset database."""
+
+    obj: HouseObject
+    type: str
+    fp: Polygon
+    height: float
+    depth: float
+
+
+def _tucked(seat: _Placed, table: _Placed) -> bool:
+    return (seat.obj.tucked_under == table.obj.id and seat.type in TUCKABLE
+            and table.type in TABLES)
 
 
 @dataclass(frozen=True)
@@ -101,11 +139,9 @@ class _Seg:
 
 
 def _wall_segment(wall: Wall) -> _Seg | None:
-    # The loader's reading: the two lowest points (stable order) are p0 and p1.
-    pts = sorted(wall.polygon, key=lambda p: p.y)
-    p0, p1 = pts[0], pts[1]
-    height = max(p.y for p in wall.polygon) - p0.y
-    seg = _Seg(_xz(p0), _xz(p1), height)
+    p0, p1 = wall.segment()
+    height = max(p.y for p in wall.polygon) - min(p.y for p in wall.polygon)
+    seg = _Seg(p0, p1, height)
     if seg.length < EPS or height <= EPS:
         return None
     return seg
@@ -130,6 +166,7 @@ class _HouseCheck:
         self.closure()
         self.holes()
         self.assets()
+        self.entrances = room_entrances(self.house)
         self.objects()
         self.reach()
         return self.problems
@@ -315,17 +352,130 @@ class _HouseCheck:
             self.add("asset-id", "proceduralParameters", f"skybox {sky!r} is not an AI2-THOR skybox")
 
     def objects(self) -> None:
-        def walk(items: list[Any]) -> None:
-            for obj in items:
-                p = Point(obj.position.x, obj.position.z)
-                inside = [rid for rid, poly in self.polys.items() if poly.covers(p)]
-                if not inside:
-                    self.add("object-in-room", obj.id, f"centre ({obj.position.x:.3f}, {obj.position.z:.3f}) is in no room")
-                elif obj.room is not None and obj.room in self.polys and obj.room not in inside:
-                    self.add("object-in-room", obj.id, f"names room {obj.room!r} but stands in {inside[0]!r}")
-                walk(obj.children)
+        db = asset_ids()
+        floor: dict[str, list[_Placed]] = defaultdict(list)
+        for obj in self.house.objects:
+            p = Point(obj.position.x, obj.position.z)
+            inside = [rid for rid, poly in self.polys.items() if poly.covers(p)]
+            if not inside:
+                self.add("object-in-room", obj.id, f"centre ({obj.position.x:.3f}, {obj.position.z:.3f}) is in no room")
+                continue
+            if obj.room is not None and obj.room in self.polys and obj.room not in inside:
+                self.add("object-in-room", obj.id, f"names room {obj.room!r} but stands in {inside[0]!r}")
+                continue
+            room = obj.room if obj.room in self.polys else inside[0]
+            placed = self._placed(obj, db)
+            if placed is None:
+                continue  # an unknown asset: reported under asset-id
+            out = placed.fp.difference(self.polys[room].buffer(OBJECT_TOLERANCE, join_style="mitre"))
+            if out.area > 1e-6:
+                self.add("object-in-room", obj.id, f"footprint leaves room {room!r} "
+                         f"({out.area:.4f} m² outside, beyond {OBJECT_TOLERANCE * 100:.0f} cm)")
+            floor[room].append(placed)
+            self.children(placed, db)
+        for room, items in floor.items():
+            self.overlaps(items)
+            self.object_reach(room, items)
+        self.poses_clear([x for items in floor.values() for x in items])
 
-        walk(self.house.objects)
+    def _placed(self, obj: HouseObject, db: dict[str, Any]) -> _Placed | None:
+        rec = db.get(obj.asset_id)
+        if rec is None:
+            return None
+        bb = rec["boundingBox"]
+        fp = check.footprint((obj.position.x, obj.position.z), bb["x"], bb["z"], obj.rotation.y)
+        return _Placed(obj, rec["objectType"], fp, bb["y"], bb["z"])
+
+    def children(self, parent: _Placed, db: dict[str, Any]) -> None:
+        """Small objects lie on their receptacle: inside its footprint, resting on its top."""
+        top = parent.obj.position.y + parent.height / 2
+        area = parent.fp.buffer(OBJECT_TOLERANCE, join_style="mitre")
+        for child in parent.obj.children:
+            c = self._placed(child, db)
+            if c is None:
+                continue
+            if c.fp.difference(area).area > 1e-6:
+                self.add("object-child", child.id, f"footprint leaves its receptacle {parent.obj.id!r}")
+            bottom = child.position.y - c.height / 2
+            if abs(bottom - top) > OBJECT_TOLERANCE:
+                self.add("object-child", child.id, f"rests at y = {bottom:.3f}, not on the top of "
+                         f"{parent.obj.id!r} (y = {top:.3f})")
+            if child.children:
+                self.children(c, db)
+
+    def overlaps(self, items: list[_Placed]) -> None:
+        """No two floor objects overlap, except a seat tucked under the table it is paired with."""
+        tree = STRtree([x.fp for x in items])
+        for i, a in enumerate(items):
+            for j in tree.query(a.fp):
+                if int(j) <= i:
+                    continue
+                b = items[int(j)]
+                area = a.fp.intersection(b.fp).area
+                if area <= OVERLAP_AREA or _tucked(a, b) or _tucked(b, a):
+                    continue
+                self.add("object-overlap", a.obj.id, f"overlaps {b.obj.id!r} by {area:.4f} m²")
+
+    def object_reach(self, room: str, items: list[_Placed]) -> None:
+        """The independent flood fill: the room's free space for an agent of the floor's radius
+        (objects and solid walls inflated by it), from the cells just inside its first door the
+        agent fits through; every other such door and every object must be reached."""
+        radius = self._radius()
+        ring = [(p.x, p.z) for p in self.house_room(room).floor_polygon]
+        ways = self.entrances.get(room, [])
+        space = check.FreeSpace.build(ring, [(e.a, e.b) for e in ways], [x.fp for x in items], radius)
+        fronts = [(e, space.in_front_of(e.a, e.b, REACH)) for e in ways]
+        # a way no agent passes, narrower than it or blocked even in the empty room, is no
+        # entrance (a gap left where no door asset fitted)
+        usable = [(e, cells) for e, cells in fronts
+                  if check.passable(e.width, radius) and (cells & space.open).any()]
+        if not usable:
+            for x in items:
+                self.add("object-reach", x.obj.id, f"room {room!r} has no door or opening an agent "
+                         f"of radius {radius} m passes, so nothing in it is reachable")
+            return
+        # entrances the empty room connects (a neck narrower than the agent may part them) must
+        # stay connected; objects must be reached from one of them
+        reached = np.zeros_like(space.free)
+        grouped = np.zeros_like(space.free)
+        for e, cells in usable:
+            if (grouped & cells).any():
+                continue
+            part = space.flood(cells, empty=True)
+            grouped |= part
+            mine = space.flood(cells)
+            reached |= mine
+            for other, more in usable:
+                if other is not e and (part & more).any() and not (mine & more).any():
+                    self.add("object-reach", other.id, f"objects in room {room!r} cut it off from {e.id!r}")
+        first = usable[0][0]
+        for x in items:
+            front = ((x.obj.position.x, x.obj.position.z), x.obj.rotation.y, x.depth) \
+                if x.type in FRONT_TYPES else None
+            if not space.reaches(reached, x.fp, REACH, front):
+                where = " from its front" if front else ""
+                self.add("object-reach", x.obj.id, f"no free cell connected to a door ({first.id!r}, …) lies within "
+                         f"{REACH} m of it{where} (agent radius {radius} m)")
+
+    def poses_clear(self, items: list[_Placed]) -> None:
+        radius = self._radius()
+        poses = [(f"agentPoses.{m}", p) for m, p in self.house.metadata.agent_poses.items()]
+        poses += [(r.id, r.metadata.core.landing) for r in self.house.rooms
+                  if r.metadata and r.metadata.core and r.metadata.core.landing]
+        for name, pose in poses:
+            p = Point(pose.position.x, pose.position.z)
+            for x in items:
+                if x.fp.distance(p) < radius:
+                    self.add("object-reach", name, f"object {x.obj.id!r} stands where the agent is posed")
+
+    def _radius(self) -> float:
+        record = self.house.metadata.mansion
+        if record is not None and record.furnishing is not None:
+            return record.furnishing.agent_radius
+        return AGENT_RADIUS
+
+    def house_room(self, rid: str) -> Any:
+        return next(r for r in self.house.rooms if r.id == rid)
 
     def reach(self) -> None:
         for mode, pose in self.house.metadata.agent_poses.items():

@@ -80,12 +80,21 @@ struct Engine<'a> {
     dropped: Vec<Dropped>,
 }
 
-/// Split the boundary at the doors: the solid walls, and each door's swing zone.
+/// Split the boundary at the doors: the solid walls, each door's zone then each spot kept clear
+/// (all free of objects), and where the entrances among them are entered (which must stay
+/// connected): the strip of the zone within `threshold` of the door, and the middle of a spot.
+///
+/// Not the whole zone: objects beside a deep swing square may part its free cells, and a cell
+/// cut off from the doorway is no way in, however much of the zone it shares.
 fn doors(
     room_id: &str,
     room: &Room,
     specs: &[super::spec::DoorSpec],
-) -> Result<(Vec<Wall>, Vec<Footprint>)> {
+    clear: &[super::spec::ClearSpec],
+    threshold: f64,
+    cell: f64,
+) -> Result<(Vec<Wall>, Vec<Footprint>, Vec<Footprint>)> {
+    let mut entrances = Vec::new();
     let mut cuts: Vec<Vec<(f64, f64)>> = vec![Vec::new(); room.walls.len()];
     let mut zones = Vec::new();
     for (k, d) in specs.iter().enumerate() {
@@ -112,15 +121,44 @@ fn doors(
                 "room {room_id}: door {k} has no width"
             )));
         }
+        // a leaf swinging into the room sweeps a square as deep as the door is wide
+        let depth = d.depth.unwrap_or(width);
+        if !(depth.is_finite() && depth > 0.0) {
+            return Err(CoreError::InvalidInput(format!(
+                "room {room_id}: door {k} has zone depth {depth}; it must be positive"
+            )));
+        }
         cuts[wi].push((t0, t1));
         let n = room.inward[wi];
         let mid = (t0 + t1) / 2.0;
         let c = [
-            w.a[0] + u.x * mid + n.x * width / 2.0,
-            w.a[1] + u.y * mid + n.y * width / 2.0,
+            w.a[0] + u.x * mid + n.x * depth / 2.0,
+            w.a[1] + u.y * mid + n.y * depth / 2.0,
         ];
-        // the leaf swings into the room: a square as deep as the door is wide
-        zones.push(Footprint::new(frame(c, yaw_facing(n)), width, width));
+        zones.push(Footprint::new(frame(c, yaw_facing(n)), width, depth));
+        if d.entrance {
+            let t = depth.min(threshold);
+            let c = [
+                w.a[0] + u.x * mid + n.x * t / 2.0,
+                w.a[1] + u.y * mid + n.y * t / 2.0,
+            ];
+            entrances.push(Footprint::new(frame(c, yaw_facing(n)), width, t));
+        }
+    }
+    for (k, c) in clear.iter().enumerate() {
+        if !(c.size.is_finite() && c.size > 0.0 && room.contains(c.center)) {
+            return Err(CoreError::InvalidInput(format!(
+                "room {room_id}: spot {k} to keep clear at {:?} (side {}) is not a square inside \
+                 the room",
+                c.center, c.size
+            )));
+        }
+        zones.push(Footprint::new(frame(c.center, 0.0), c.size, c.size));
+        if c.entrance {
+            // the cells round the spot's centre: where the agent stands
+            let side = (2.0 * cell).min(c.size);
+            entrances.push(Footprint::new(frame(c.center, 0.0), side, side));
+        }
     }
     let mut solid = Vec::new();
     for (wi, w) in room.walls.iter().enumerate() {
@@ -145,7 +183,7 @@ fn doors(
             });
         }
     }
-    Ok((solid, zones))
+    Ok((solid, zones, entrances))
 }
 
 impl<'a> Engine<'a> {
@@ -732,12 +770,19 @@ pub fn place_room(req: &PlacementRequest) -> Result<Placement> {
     let id = req.room_id.as_str();
     check_options(id, opts)?;
     let room = Room::new(id, &req.polygon)?;
-    let (solid, zones) = doors(id, &room, &req.doors)?;
+    let (solid, zones, entrances) = doors(
+        id,
+        &room,
+        &req.doors,
+        &req.keep_clear,
+        opts.reach_distance,
+        opts.cell,
+    )?;
     let grid = ReachGrid::new(
         id,
         &room,
         &solid,
-        &zones,
+        &entrances,
         opts.agent_radius,
         opts.reach_distance,
         opts.cell,
@@ -853,10 +898,8 @@ mod tests {
         PlacementRequest {
             room_id: "bedroom".into(),
             polygon: vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]],
-            doors: vec![DoorSpec {
-                a: [0.3, 0.0],
-                b: [1.3, 0.0],
-            }],
+            doors: vec![DoorSpec::swinging([0.3, 0.0], [1.3, 0.0])],
+            keep_clear: Vec::new(),
             items: vec![
                 bed,
                 item(
@@ -903,16 +946,30 @@ mod tests {
         }
     }
 
+    /// The request's room, solid walls, zones kept free and entrances.
+    fn split(req: &PlacementRequest) -> (Room, Vec<Wall>, Vec<Footprint>, Vec<Footprint>) {
+        let room = Room::new("r", &req.polygon).unwrap();
+        let (solid, zones, entrances) = doors(
+            "r",
+            &room,
+            &req.doors,
+            &req.keep_clear,
+            req.options.reach_distance,
+            req.options.cell,
+        )
+        .unwrap();
+        (room, solid, zones, entrances)
+    }
+
     /// An independent re-check: a fresh grid with every object blocked at once.
     fn recheck(req: &PlacementRequest, out: &Placement) {
-        let room = Room::new("r", &req.polygon).unwrap();
-        let (solid, zones) = doors("r", &room, &req.doors).unwrap();
+        let (room, solid, zones, entrances) = split(req);
         let o = &req.options;
         let mut g = ReachGrid::new(
             "r",
             &room,
             &solid,
-            &zones,
+            &entrances,
             o.agent_radius,
             o.reach_distance,
             o.cell,
@@ -985,10 +1042,8 @@ mod tests {
         let req = PlacementRequest {
             room_id: "hall".into(),
             polygon: vec![[0.0, 0.0], [6.0, 0.0], [6.0, 5.0], [0.0, 5.0]],
-            doors: vec![DoorSpec {
-                a: [0.5, 0.0],
-                b: [1.5, 0.0],
-            }],
+            doors: vec![DoorSpec::swinging([0.5, 0.0], [1.5, 0.0])],
+            keep_clear: Vec::new(),
             items: vec![item(
                 "table",
                 "DiningTable",
@@ -1032,15 +1087,10 @@ mod tests {
             room_id: "corridor".into(),
             polygon: vec![[0.0, 0.0], [2.0, 0.0], [2.0, 8.0], [0.0, 8.0]],
             doors: vec![
-                DoorSpec {
-                    a: [0.5, 0.0],
-                    b: [1.5, 0.0],
-                },
-                DoorSpec {
-                    a: [0.5, 8.0],
-                    b: [1.5, 8.0],
-                },
+                DoorSpec::swinging([0.5, 0.0], [1.5, 0.0]),
+                DoorSpec::swinging([0.5, 8.0], [1.5, 8.0]),
             ],
+            keep_clear: Vec::new(),
             items: vec![
                 far,
                 item(
@@ -1063,12 +1113,74 @@ mod tests {
     }
 
     #[test]
+    fn aprons_and_spots_kept_clear_stay_free_and_reachable() {
+        use crate::place::spec::ClearSpec;
+        // the door swings out of the room (a 0.6 m apron), and the agent lands at (3, 3)
+        let mut req = bedroom(3);
+        req.doors[0].depth = Some(0.6);
+        req.keep_clear.push(ClearSpec {
+            center: [3.0, 3.0],
+            size: 0.6,
+            entrance: true,
+        });
+        let (_, _, zones, entrances) = split(&req);
+        assert_eq!((zones.len(), entrances.len()), (2, 2));
+        // the apron: the door's 1 m along the wall, 0.6 m into the room
+        let [x0, y0, x1, y1] = zones[0].aabb();
+        assert!((x0 - 0.3).abs() < 1e-9 && (x1 - 1.3).abs() < 1e-9);
+        assert!(y0.abs() < 1e-9 && (y1 - 0.6).abs() < 1e-9);
+        for seed in 0..4 {
+            req.options.seed = seed;
+            let out = place_room(&req).unwrap();
+            // recheck: nothing in either zone, and the spot is connected to the door
+            recheck(&req, &out);
+        }
+        let mut bad = bedroom(0);
+        bad.keep_clear.push(ClearSpec {
+            center: [5.0, 1.0],
+            size: 0.6,
+            entrance: true,
+        });
+        let err = place_room(&bad).unwrap_err().to_string();
+        assert!(err.contains("bedroom") && err.contains("spot 0"), "{err}");
+        let mut bad = bedroom(0);
+        bad.doors[0].depth = Some(0.0);
+        assert!(place_room(&bad).is_err());
+    }
+
+    #[test]
+    fn a_door_cut_off_by_the_room_itself_is_kept_free_but_not_required() {
+        // a 4 m square with a 0.4 m slot at the top right, closed by a door: no agent gets from
+        // the main door to it, so as an entrance it fails the room, as a kept zone it does not
+        let mut req = bedroom(1);
+        req.polygon = vec![
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [3.6, 4.0],
+            [3.6, 5.0],
+            [3.2, 5.0],
+            [3.2, 4.0],
+            [0.0, 4.0],
+        ];
+        req.doors.push(DoorSpec::swinging([3.6, 4.2], [3.6, 4.8]));
+        req.doors[1].depth = Some(0.3);
+        assert!(place_room(&req).is_err());
+        req.doors[1].entrance = false;
+        let out = place_room(&req).unwrap();
+        let (_, _, zones, entrances) = split(&req);
+        assert_eq!((zones.len(), entrances.len()), (2, 1));
+        for p in &out.objects {
+            let fp = Footprint::new(frame(p.center, p.yaw), p.size[0], p.size[1]);
+            assert!(!zones[1].conflicts(&fp, 0.0), "{} in the kept zone", p.id);
+        }
+        recheck(&req, &out);
+    }
+
+    #[test]
     fn malformed_requests_name_the_room() {
         let mut req = bedroom(0);
-        req.doors[0] = DoorSpec {
-            a: [1.0, 1.0],
-            b: [2.0, 1.0],
-        };
+        req.doors[0] = DoorSpec::swinging([1.0, 1.0], [2.0, 1.0]);
         let err = place_room(&req).unwrap_err().to_string();
         assert!(err.contains("bedroom") && err.contains("door 0"), "{err}");
         let mut req = bedroom(0);

@@ -132,12 +132,50 @@ fn single() -> Structure {
     Structure::Single
 }
 
-/// A door on the room's boundary: the opening from `a` to `b`. Its swing zone (a square of the
-/// door's width inside the room) stays free of objects, and its free cells are the entrance.
+/// A door on the room's boundary: the opening from `a` to `b`. Its zone (the door's width along
+/// the wall, `depth` into the room) stays free of objects, and its free cells are the entrance.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct DoorSpec {
     pub a: [f64; 2],
     pub b: [f64; 2],
+    /// How far the zone reaches into the room. `None`: as deep as the door is wide, the square
+    /// a leaf swinging into this room sweeps. A door whose leaf swings into the other room, or
+    /// an opening with no leaf, needs only an apron to step through, so the caller passes less.
+    #[serde(default)]
+    pub depth: Option<f64>,
+    /// Whether the door must stay connected to the room's other entrances. A door that the
+    /// empty room already cuts off from the rest (a neck narrower than the agent) is passed as
+    /// `false`: its zone stays free, but the room is furnished from the doors that do connect.
+    #[serde(default = "yes")]
+    pub entrance: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl DoorSpec {
+    /// A door whose leaf swings into the room (zone: the square of its width).
+    pub fn swinging(a: [f64; 2], b: [f64; 2]) -> Self {
+        Self {
+            a,
+            b,
+            depth: None,
+            entrance: true,
+        }
+    }
+}
+
+/// A square of the floor that stays free of objects and must stay reachable from the doors: where
+/// the agent spawns, or lands when it leaves a stair or lift core into this room.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ClearSpec {
+    pub center: [f64; 2],
+    /// Side of the square, in metres.
+    pub size: f64,
+    /// As `DoorSpec::entrance`: `false` keeps the square free without requiring it reached.
+    #[serde(default = "yes")]
+    pub entrance: bool,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -194,6 +232,9 @@ pub struct PlacementRequest {
     pub polygon: Vec<[f64; 2]>,
     #[serde(default)]
     pub doors: Vec<DoorSpec>,
+    /// Spots kept free and reachable besides the doors (they join the entrances).
+    #[serde(default)]
+    pub keep_clear: Vec<ClearSpec>,
     pub items: Vec<ItemSpec>,
     #[serde(default)]
     pub options: PlaceOptions,
