@@ -22,7 +22,9 @@ from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError, MansionError, PlannerError
 from mansion.floorplan import EnergyWeights, FixedSeedPlanner, SolverSettings, solve_floor
 from mansion.eval.iou import plan_iou
-from mansion.eval.t2d import CELL_SIZE, GRID, T2DPlan, iter_plans, plan_ids, protocol_inputs, solver_to_mask
+from mansion.eval.t2d import (
+    CELL_SIZE, GRID, T2DPlan, iter_plans, plan_ids, plans_folder, protocol_inputs, solver_to_mask,
+)
 
 if TYPE_CHECKING:
     from mansion.agents.llm import LLMClient
@@ -177,7 +179,7 @@ def evaluate_floorplans(
         chosen = chosen[:limit]
     if not chosen:
         raise InvalidInputError(f"no plans to evaluate in {str(data)!r}")
-    folder = Path(data) / "plans" if (Path(data) / "plans").is_dir() else Path(data)
+    folder = plans_folder(data)
     planned: dict[str, dict[str, tuple[float, float]] | str | None] = dict.fromkeys(chosen)
     if seeds == "anthropic":
         planned.update(_text_seeds(Path(data), folder, chosen, client))

@@ -48,6 +48,7 @@ __all__ = [
     "T2DRoom",
     "iter_plans",
     "plan_ids",
+    "plans_folder",
     "protocol_inputs",
     "solver_to_mask",
 ]
@@ -117,7 +118,8 @@ class T2DPlan(BaseModel):
         return np.asarray(self.label64, dtype=np.int32)
 
 
-def _plans_dir(data: str | os.PathLike[str]) -> Path:
+def plans_folder(data: str | os.PathLike[str]) -> Path:
+    """Where the plan files of a data folder are: ``DIR/plans``, or ``DIR`` itself."""
     d = Path(data)
     plans = d / "plans"
     if plans.is_dir():
@@ -129,13 +131,13 @@ def _plans_dir(data: str | os.PathLike[str]) -> Path:
 
 def plan_ids(data: str | os.PathLike[str]) -> list[str]:
     """The plan ids of a data folder (``DIR/plans/<id>.json``), in numeric-then-text order."""
-    ids = [p.stem for p in _plans_dir(data).glob("*.json")]
+    ids = [p.stem for p in plans_folder(data).glob("*.json")]
     return sorted(ids, key=lambda s: (0, int(s), s) if s.isdigit() else (1, 0, s))
 
 
 def iter_plans(data: str | os.PathLike[str], ids: list[str] | None = None) -> Iterator[tuple[str, T2DPlan]]:
     """Load plans one at a time (all of the folder, or the given ids)."""
-    folder = _plans_dir(data)
+    folder = plans_folder(data)
     for pid in plan_ids(data) if ids is None else ids:
         yield pid, T2DPlan.load(folder / f"{pid}.json")
 
