@@ -87,3 +87,15 @@ def load_input(model: type[M], path: str | os.PathLike[str], what: str) -> M:
         raise InvalidInputError(
             f"invalid {what} in {str(p)!r}: {describe_validation_error(exc)}"
         ) from exc
+
+
+def load_written(model: type[M], path: str | os.PathLike[str], what: str) -> M:
+    """Read back a JSON file that mansion wrote (``model_dump_json``): validated in JSON mode, so
+    it round-trips exactly; an unreadable or invalid file is an InvalidInputError naming it."""
+    p = Path(path)
+    try:
+        return model.model_validate_json(p.read_bytes())
+    except OSError as exc:
+        raise InvalidInputError(f"cannot read {what} {str(p)!r}: {exc}") from exc
+    except ValidationError as exc:
+        raise InvalidInputError(f"invalid {what} {str(p)!r}: {describe_validation_error(exc)}") from exc

@@ -16,11 +16,11 @@ import os
 from pathlib import Path
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError
-from mansion.models._validation import describe_validation_error
+from mansion.models._validation import load_written
 from mansion.models.footprint import Footprint, Point, Ring
 from mansion.models.graph import OpenRelation, RoomGraph
 from mansion.models.layout import FloorLayout
@@ -224,12 +224,4 @@ class Building(BaseModel):
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> Building:
         """Read a building written by :meth:`to_json`; problems are :class:`InvalidInputError`."""
-        p = Path(path)
-        try:
-            return cls.model_validate_json(p.read_bytes())
-        except OSError as exc:
-            raise InvalidInputError(f"cannot read building file {str(p)!r}: {exc}") from exc
-        except ValidationError as exc:
-            raise InvalidInputError(
-                f"invalid building in {str(p)!r}: {describe_validation_error(exc)}"
-            ) from exc
+        return load_written(cls, path, "building file")

@@ -12,11 +12,10 @@ import os
 from pathlib import Path
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import BaseModel, ConfigDict, Field
 
 from mansion._io import atomic_write_text
-from mansion.exceptions import InvalidInputError
-from mansion.models._validation import describe_validation_error
+from mansion.models._validation import load_written
 from mansion.scene.house import AgentPose
 
 __all__ = ["MANIFEST_SCHEMA_VERSION", "BuildingManifest", "CoreLanding", "ManifestCore", "ManifestFloor"]
@@ -71,12 +70,4 @@ class BuildingManifest(BaseModel):
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> BuildingManifest:
-        p = Path(path)
-        try:
-            return cls.model_validate_json(p.read_bytes())
-        except OSError as exc:
-            raise InvalidInputError(f"cannot read manifest {str(p)!r}: {exc}") from exc
-        except ValidationError as exc:
-            raise InvalidInputError(
-                f"invalid manifest {str(p)!r}: {describe_validation_error(exc)}"
-            ) from exc
+        return load_written(cls, path, "manifest")
