@@ -48,6 +48,14 @@ class RoomNode(BaseModel):
     floor_material: str | None = None
     wall_material: str | None = None
     open_relation: OpenRelation = "door"
+    min_width: float | None = Field(
+        default=None,
+        gt=0.0,
+        description=(
+            "Minimum clear width in metres: no part of the laid-out room may be narrower "
+            "(None: no limit of its own). Planners fill it from the room design table."
+        ),
+    )
 
     @model_validator(mode="before")
     @classmethod
