@@ -10,6 +10,7 @@ fn node(id: &str, kind: &str, area: f64) -> NodeSpec {
         kind: kind.into(),
         area,
         room_type: None,
+        min_width: None,
     }
 }
 

@@ -56,8 +56,12 @@ pub struct CutOptions {
     pub fallback_samples: usize,
     /// Shared wall needed for an edge to count as realised, in cell edges.
     pub min_contact: u32,
-    /// Minimum room width in cells, if any.
+    /// Minimum room width in cells for every room, if any.
     pub min_width: Option<usize>,
+    /// Each label's own minimum width in cells (indexed by label; 0 or 1, or a label past the
+    /// end: no rule of its own). A room's rule is the larger of this and `min_width`.
+    #[serde(default)]
+    pub widths: Vec<usize>,
     pub weights: Weights,
     pub rng_seed: u64,
     /// Run every retry and keep the best survivor overall, instead of stopping at the first retry
@@ -82,6 +86,7 @@ impl Default for CutOptions {
             fallback_samples: 400,
             min_contact: 2,
             min_width: None,
+            widths: Vec::new(),
             weights: Weights::default(),
             rng_seed: 0,
             exhaustive: false,
@@ -173,6 +178,11 @@ pub struct Prepared<'a> {
     pub seeds: Vec<Option<[f64; 2]>>,
     /// label → position in `labels`, or -1.
     pub index: Vec<i16>,
+    /// Width rule in cells of each round label (by position in `labels`): final labels only,
+    /// ≤ 1 for none.
+    pub widths: Vec<u16>,
+    /// Does any round label have a width rule? (Candidates without one skip the width passes.)
+    pub width_rules: bool,
     pub round: u64,
 }
 
@@ -230,6 +240,17 @@ impl<'a> Prepared<'a> {
             index[l as usize] = k as i16;
         }
         let field = Field::new(&base, walls);
+        let widths: Vec<u16> = labels
+            .iter()
+            .map(|&l| {
+                if !spec.final_labels.contains(&l) {
+                    return 0;
+                }
+                let own = opts.widths.get(l as usize).copied().unwrap_or(0);
+                own.max(opts.min_width.unwrap_or(0)).min(u16::MAX as usize) as u16
+            })
+            .collect();
+        let width_rules = widths.iter().any(|&w| w > 1);
         Prepared {
             spec,
             walls,
@@ -241,6 +262,8 @@ impl<'a> Prepared<'a> {
             targets,
             seeds,
             index,
+            widths,
+            width_rules,
             round,
         }
     }
@@ -401,6 +424,18 @@ impl<'a> Prepared<'a> {
         if !cleanup::clean(&mut grid, &self.region, self.walls, s) {
             return Err(Reject::Unfilled);
         }
+        if self.width_rules
+            && !cleanup::clean_widths(
+                &mut grid,
+                &self.region,
+                self.walls,
+                &self.index,
+                &self.widths,
+                s,
+            )
+        {
+            return Err(Reject::Unfilled);
+        }
         self.check(&grid, s)?;
         let mut feats = energy::features(
             &grid,
@@ -428,10 +463,11 @@ impl<'a> Prepared<'a> {
             if topology::straddles(grid, &self.region, self.walls, l) {
                 return Err(Reject::Straddles(l));
             }
-            if let Some(mw) = self.opts.min_width {
-                if !topology::min_width_ok(grid, &self.region, l, mw) {
-                    return Err(Reject::TooNarrow(l));
-                }
+        }
+        if self.width_rules {
+            cleanup::thin_cells(grid, &self.region, &self.index, &self.widths, s);
+            if let Some(&c) = s.thin.first() {
+                return Err(Reject::TooNarrow(grid.cells[c]));
             }
         }
         let contacts =

@@ -7,6 +7,9 @@
 //! min–max form always spans 0..1 within a candidate, so it barely tells candidates apart),
 //! `wall` is the share of the room's perimeter on the parent region's envelope (a fraction, so the
 //! clamp means something) and `n_int` counts the room's corners strictly inside the parent region.
+//! Two optional shape terms (weights 0 by default): `w_rect·(1 − area/bbox)` for rooms that fill
+//! their bounding box badly and `w_aspect·max(0, long/short − 3)` for seeded rooms stretched
+//! beyond 3 : 1.
 //! The weights come from Python; the core only computes.
 
 use crate::grid::{Grid, Label};
@@ -22,6 +25,13 @@ pub struct Weights {
     pub drift: f64,
     pub wall: f64,
     pub corner: f64,
+    /// Share of the room's bounding box it leaves empty (0 for a rectangle). Absent: 0.
+    #[serde(default)]
+    pub rect: f64,
+    /// Bounding-box elongation beyond 3 : 1 (`max(0, long/short − 3)`), seeded rooms only, so a
+    /// leftover corridor is not penalised for being long. Absent: 0.
+    #[serde(default)]
+    pub aspect: f64,
 }
 
 impl Default for Weights {
@@ -34,6 +44,8 @@ impl Default for Weights {
             drift: 17.65,
             wall: 0.57,
             corner: 0.29,
+            rect: 0.0,
+            aspect: 0.0,
         }
     }
 }
@@ -47,6 +59,8 @@ impl Weights {
             drift: 0.0,
             wall: 0.8,
             corner: 3.0,
+            rect: 0.0,
+            aspect: 0.0,
         }
     }
 }
@@ -70,6 +84,10 @@ pub struct RoomFeatures {
     pub wall: f64,
     /// max(0, interior corners − 4).
     pub corner: f64,
+    /// 1 − area / bounding-box area.
+    pub rect: f64,
+    /// max(0, long side / short side − 3) of the bounding box; 0 for rooms without a seed.
+    pub aspect: f64,
     /// This room's energy under the weights used.
     pub energy: f64,
 }
@@ -90,6 +108,8 @@ pub fn features(
     let mut sum = vec![[0f64; 2]; n];
     let mut perim = vec![0u32; n];
     let mut env = vec![0u32; n];
+    // bounding boxes (x0, y0, x1, y1)
+    let mut bbox = vec![(usize::MAX, usize::MAX, 0usize, 0usize); n];
     for &c in &region.cells {
         let c = c as usize;
         let l = grid.cells[c];
@@ -98,8 +118,11 @@ pub fn features(
             _ => continue,
         };
         area[k] += 1;
-        sum[k][0] += (c % w) as f64 + 0.5;
-        sum[k][1] += (c / w) as f64 + 0.5;
+        let (x, y) = (c % w, c / w);
+        sum[k][0] += x as f64 + 0.5;
+        sum[k][1] += y as f64 + 0.5;
+        let b = &mut bbox[k];
+        *b = (b.0.min(x), b.1.min(y), b.2.max(x), b.3.max(y));
         for nb in [c - 1, c + 1, c - w, c + w] {
             if grid.cells[nb] != l {
                 perim[k] += 1;
@@ -128,6 +151,14 @@ pub fn features(
             0.0
         };
         f.corner = (corners[k] as f64 - 4.0).max(0.0);
+        if area[k] > 0 {
+            let (x0, y0, x1, y1) = bbox[k];
+            let (bw, bh) = ((x1 - x0 + 1) as f64, (y1 - y0 + 1) as f64);
+            f.rect = 1.0 - area[k] as f64 / (bw * bh);
+            if seeds[k].is_some() {
+                f.aspect = (bw.max(bh) / bw.min(bh) - 3.0).max(0.0);
+            }
+        }
     }
     // min–max normalisation of the seed distance across the rooms that have seeds
     let seeded: Vec<f64> = (0..n)
@@ -198,6 +229,10 @@ pub fn score(feats: &mut [RoomFeatures], w: &Weights) -> f64 {
     for f in feats.iter_mut() {
         f.energy = w.ratio * f.ratio + w.seed * f.seed + w.drift * f.drift + w.corner * f.corner
             - w.wall * f.wall;
+        // shape terms only when weighted, so the energy without them is bit for bit the paper's
+        if w.rect != 0.0 || w.aspect != 0.0 {
+            f.energy += w.rect * f.rect + w.aspect * f.aspect;
+        }
         total += f.energy;
     }
     total

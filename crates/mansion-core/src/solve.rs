@@ -24,6 +24,9 @@ pub struct NodeSpec {
     pub area: f64,
     #[serde(default)]
     pub room_type: Option<String>,
+    /// Minimum clear width in metres (None: no rule of its own).
+    #[serde(default)]
+    pub min_width: Option<f64>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -189,6 +192,9 @@ pub struct Floor {
     pub room_types: Vec<String>,
     /// Requested area of each label in m² (core boxes for cores).
     pub areas: Vec<f64>,
+    /// Width rule of each label in cells: the larger of its own `min_width` and the floor-wide
+    /// one, capped by what its area can hold (0 for cores).
+    pub widths: Vec<usize>,
     pub hub: Label,
     /// Undirected graph edges between labels, deduplicated, `a < b`.
     pub edges: Vec<(Label, Label)>,
@@ -246,6 +252,14 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
                 "room '{}' has type '{}', expected one of {:?}",
                 n.id, n.kind, ROLES
             ));
+        }
+        if let Some(mw) = n.min_width {
+            if !(mw.is_finite() && mw > 0.0) {
+                return invalid(format!(
+                    "room '{}' has min_width {} m; a minimum width must be a positive number of metres",
+                    n.id, mw
+                ));
+            }
         }
         if !(is_core(&n.kind) || n.area.is_finite() && n.area > 0.0) {
             return invalid(format!(
@@ -367,6 +381,20 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
             ));
         }
     }
+    // Width rules in cells. A room whose area cannot hold a square of its width would fail every
+    // candidate, so the rule is capped at the side of the largest square its scaled area holds.
+    let mut widths = vec![0usize; names.len()];
+    for (l, n) in graph.nodes.iter().enumerate() {
+        if is_core(&n.kind) {
+            continue;
+        }
+        let own = n.min_width.map_or(0, |mw| {
+            (mw / opts.cell_size - 1e-6).ceil().max(1.0) as usize
+        });
+        let wanted = own.max(opts.min_width.unwrap_or(0));
+        let holds = (n.area * scale / cell_area).sqrt().floor().max(1.0) as usize;
+        widths[l] = wanted.min(holds);
+    }
     let hub = ids[mains[0]] as Label;
     // InitLayout: the hub owns the whole free region
     for c in grid.cells.iter_mut() {
@@ -401,6 +429,7 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
         kinds,
         room_types,
         areas,
+        widths,
         hub,
         edges: edges.into_iter().collect(),
     })
@@ -444,7 +473,9 @@ pub fn build_rounds(floor: &Floor) -> Result<Vec<(Label, Vec<Label>)>> {
 /// the deepest cell of the region (farthest from its envelope) to each room outside the region that
 /// the parent must touch. Children cannot take it, so the parent stays connected to what it must
 /// reach (the paper's hub reaching every core) whatever the children do.
-pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
+///
+/// A parent with a width rule wider than two cells gets a spine as wide as its rule.
+pub fn spine(region: &Region, grid: &Grid, targets: &[Label], width: usize) -> Vec<usize> {
     let w = region.w;
     if region.is_empty() {
         return vec![];
@@ -488,6 +519,18 @@ pub fn spine(region: &Region, grid: &Grid, targets: &[Label]) -> Vec<usize> {
         for nb in [c + 1, c + w] {
             if region.inside[nb] {
                 out.push(nb);
+            }
+        }
+        // and to the parent's width rule: every path cell the corner of a rule-sized square
+        if width > 2 {
+            let (x, y) = (c % w, c / w);
+            for dy in 0..width {
+                for dx in 0..width {
+                    let (nx, ny) = (x + dx, y + dy);
+                    if nx < w && ny < region.h && region.inside[ny * w + nx] {
+                        out.push(ny * w + nx);
+                    }
+                }
             }
         }
     }
@@ -566,7 +609,9 @@ pub fn solve_floor(
         seed_separation: opts.seed_separation,
         fallback_samples: opts.fallback_samples,
         min_contact: ((opts.min_contact / opts.cell_size) - 1e-9).ceil().max(1.0) as u32,
-        min_width: opts.min_width,
+        // folded into `widths` (per label, capped by area)
+        min_width: None,
+        widths: floor.widths.clone(),
         weights: opts.weights,
         rng_seed: opts.rng_seed,
         exhaustive: opts.exhaustive,
@@ -646,7 +691,12 @@ pub fn solve_floor(
             .filter(|&q| exists[q as usize])
             .collect();
         let reserved = if opts.hierarchical {
-            spine(&region, &grid, &parent_attract)
+            spine(
+                &region,
+                &grid,
+                &parent_attract,
+                floor.widths[*parent as usize],
+            )
         } else {
             vec![]
         };
@@ -983,6 +1033,7 @@ mod tests {
             kind: kind.into(),
             area,
             room_type: None,
+            min_width: None,
         }
     }
 

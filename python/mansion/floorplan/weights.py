@@ -19,8 +19,11 @@ class EnergyWeights(BaseModel):
     """Weights of the per-room energy that ranks candidate cuts.
 
     For a child room r: ``e = ratio·|area−a|/a + seed·z_seed + drift·d/√a
-    + corner·max(0, n_int−4) − wall·clamp01(wall_contact)``, and the candidate with the lowest
-    Σ e wins. ``d`` is the distance from the room's centroid to its seed; ``z_seed`` is ``d``
+    + corner·max(0, n_int−4) − wall·clamp01(wall_contact) + rect·(1 − area/bbox)
+    + aspect·max(0, long/short − 3)``, and the candidate with the lowest Σ e wins. The two shape
+    terms (ours, 0 by default so the tuned energy is unchanged) favour compact, rectangular rooms:
+    ``bbox`` is the room's bounding box, and the aspect term skips the parent's leftover (a
+    corridor may be long). ``d`` is the distance from the room's centroid to its seed; ``z_seed`` is ``d``
     min–max normalised over the candidate's rooms (the paper's term); ``d/√a`` is ``d`` in units
     of the room's own size (ours: the min–max form spans 0..1 in every candidate, so it hardly
     separates candidates).
@@ -45,6 +48,12 @@ class EnergyWeights(BaseModel):
     )
     wall: float = Field(default=0.57, ge=0.0, description="Contact with the parent's envelope.")
     corner: float = Field(default=0.29, ge=0.0, description="Interior corners beyond four.")
+    rect: float = Field(
+        default=0.0, ge=0.0, description="Share of the room's bounding box it leaves empty."
+    )
+    aspect: float = Field(
+        default=0.0, ge=0.0, description="Bounding-box elongation beyond 3:1 (seeded rooms)."
+    )
 
     @classmethod
     def paper(cls) -> EnergyWeights:
@@ -76,7 +85,9 @@ class SolverSettings(BaseModel):
       core reuses the last one for retries beyond the list);
     - ``seed_separation``: minimum distance between perturbed seeds, in cells;
     - ``fallback_samples``: candidates drawn by the Monte Carlo fallback when every retry failed;
-    - ``min_width``: narrowest allowed room, in cells (None: no limit);
+    - ``min_width``: narrowest allowed room, in cells, for every room of the floor (None: no
+      limit); each room's own ``RoomNode.min_width`` (metres) adds to it, the larger rule wins,
+      and a rule is capped at the side of the largest square the room's area can hold;
     - ``growth``: side choice of the rectangular growth phase: ``"balanced"`` keeps each room
       centred on its seed until a wall or a neighbour stops it (so seeds act as centroids);
       ``"longest"`` grows the longest free side first, as in Lopes et al. (2010).
