@@ -267,7 +267,7 @@ def test_a_floor_that_never_solves_is_named(monkeypatch: pytest.MonkeyPatch) -> 
         raise InfeasibleLayoutError("no candidate survived")
 
     monkeypatch.setattr(gen, "solve_floor", fail)
-    with pytest.raises(InfeasibleLayoutError, match="floor 0 could not be laid out in 4 attempts"):
+    with pytest.raises(InfeasibleLayoutError, match="floor 0 could not be laid out in 6 attempts"):
         generate_building("a two-storey townhouse", seed=0)
     assert len(calls) == gen.ATTEMPTS and len(set(calls)) == gen.ATTEMPTS
 

@@ -7,8 +7,10 @@ their original's graph and layout. The finished building is checked
 (:func:`~mansion.building.checks.check_building`) before it is returned.
 
 A floor whose solve fails is retried with other solver seeds, then with its ``adjacent`` edges
-dropped, then (only for carried walls) without the carried walls; each relaxation is recorded on
-the floor. When every attempt fails, :class:`InfeasibleLayoutError` names the floor.
+dropped, then (only for carried walls) without the carried walls, then without the rooms' own
+minimum widths (the floor-wide :data:`MIN_CLEAR_WIDTH` kept), then without any width rule; each
+relaxation is recorded on the floor. When every attempt fails, :class:`InfeasibleLayoutError`
+names the floor.
 
 The offline planner answers in milliseconds, so its floors are solved here one after another.
 Any other planner (Claude) runs through the LangGraph pipeline of
@@ -19,6 +21,7 @@ Any other planner (Claude) runs through the LangGraph pipeline of
 from __future__ import annotations
 
 import hashlib
+import math
 import os
 import random
 from collections.abc import Callable
@@ -34,13 +37,14 @@ from mansion.building.load_bearing import (
     retarget_first_round,
 )
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError
-from mansion.floorplan import EnergyWeights, SeedPlanner, solve_floor
+from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
 from mansion.models.building import Building, BuildingProgram, Floor, FloorCopy, Palette, RoomCard
 from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner, get_planner
 
 __all__ = [
     "ATTEMPTS",
+    "MIN_CLEAR_WIDTH",
     "copy_floor",
     "derived_seed",
     "finish_building",
@@ -49,8 +53,13 @@ __all__ = [
     "solve_building_floor",
 ]
 
-#: Solver attempts per floor: two plain seeds, then without adjacent edges, then without walls.
-ATTEMPTS = 4
+#: Solver attempts per floor: two plain seeds, then without adjacent edges, then without walls,
+#: then without the rooms' own minimum widths, then without the floor-wide one.
+ATTEMPTS = 6
+
+#: Narrowest part any room (corridors and the hub included) may have, in metres: an agent of
+#: radius 0.25–0.3 m needs 0.6 m clear, which on the 0.5 m grid rounds up to two cells.
+MIN_CLEAR_WIDTH = 1.0
 
 Progress = Callable[[str, int, int], None]
 
@@ -83,6 +92,17 @@ def _without_adjacent(graph: RoomGraph) -> RoomGraph:
     return RoomGraph(nodes=graph.nodes, edges=[e for e in graph.edges if e.kind == "access"])
 
 
+def _without_widths(graph: RoomGraph) -> RoomGraph:
+    nodes = [n.model_copy(update={"min_width": None}) for n in graph.nodes]
+    return RoomGraph(nodes=nodes, edges=graph.edges)
+
+
+def floor_settings(cell_size: float) -> SolverSettings:
+    """The solver settings of generated floors: the floor-wide minimum width
+    (:data:`MIN_CLEAR_WIDTH`) in cells of ``cell_size``."""
+    return SolverSettings(min_width=max(1, math.ceil(MIN_CLEAR_WIDTH / cell_size - 1e-6)))
+
+
 def _solve(
     index: int,
     graph: RoomGraph,
@@ -102,9 +122,16 @@ def _solve(
             fp = footprint.model_copy(update={"fixed_walls": []})
             sp = None
             relax.append("carried walls dropped")
+        options = solver
+        if attempt >= 4 and any(n.min_width is not None for n in graph.nodes):
+            g = _without_widths(g)
+            relax.append("room minimum widths dropped")
+        if attempt >= 5 and solver.get("settings") is not None:
+            options = {**solver, "settings": solver["settings"].model_copy(update={"min_width": None})}
+            relax.append(f"minimum clear width of {MIN_CLEAR_WIDTH:g} m dropped")
         rng_seed = derived_seed(seed, "floor", index, attempt)
         try:
-            layout = solve_floor(g, fp, seed_planner=sp, rng_seed=rng_seed, **solver)
+            layout = solve_floor(g, fp, seed_planner=sp, rng_seed=rng_seed, **options)
         except InfeasibleLayoutError as exc:
             errors.append(f"attempt {attempt + 1}: {exc}")
             continue
@@ -174,6 +201,7 @@ def generate_building(
     solver = {
         "cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact,
         "weights": weights if weights is not None else EnergyWeights.paper(),
+        "settings": floor_settings(cell_size),
     }
     if not isinstance(plan, OfflinePlanner):
         # LLM planners wait on the network: the LangGraph pipeline fans the floors out. It is
