@@ -1,9 +1,10 @@
 //! Criterion benches of the solver, single-threaded (a one-thread rayon pool) so figures compare
 //! across machines: (a) 100 candidates of a 7-room plan on a 64×64 grid, (b) the whole 10 × 100
-//! budget of that plan, (c) `solve_floor` of a 500 m² office floor with about 20 rooms.
+//! budget of that plan, (c) `solve_floor` of a 500 m² office floor with about 20 rooms; (a) and (c)
+//! again with width rules (rooms ≥ 1.0 m, the hub ≥ 1.5 m, and a floor-wide rule of 1.0 m).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use mansion_benches::{office, t2d_like};
+use mansion_benches::{office, t2d_like, with_widths};
 use mansion_core::seedplan::HeuristicPlanner;
 use mansion_core::solve::{solve_floor, SolveOptions};
 use std::hint::black_box;
@@ -43,6 +44,23 @@ fn bench(c: &mut Criterion) {
         exhaustive: true,
         ..base.clone()
     };
+    // the same hundred candidates with width rules: the width passes' cost per candidate
+    let (wgraph, wfp, wbase) = with_widths(t2d_like(), 1.0, 1.5, 4);
+    let wide = SolveOptions {
+        hierarchical: false,
+        retries: 1,
+        batch: 100,
+        exhaustive: true,
+        ..wbase
+    };
+    g.bench_function("100_candidates_min_width", |b| {
+        b.iter(|| {
+            pool.install(|| {
+                solve_floor(black_box(&wgraph), &wfp, &wide, &mut HeuristicPlanner)
+                    .expect("solvable")
+            })
+        })
+    });
     g.bench_function("budget_10x100", |b| {
         b.iter(|| {
             pool.install(|| {
@@ -64,6 +82,14 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("office_500m2_20_rooms");
     g.sample_size(10);
     g.bench_function("solve_floor", |b| {
+        b.iter(|| {
+            pool.install(|| {
+                solve_floor(black_box(&graph), &fp, &opts, &mut HeuristicPlanner).expect("solvable")
+            })
+        })
+    });
+    let (graph, fp, opts) = with_widths(office(), 1.0, 1.5, 2);
+    g.bench_function("solve_floor_min_width", |b| {
         b.iter(|| {
             pool.install(|| {
                 solve_floor(black_box(&graph), &fp, &opts, &mut HeuristicPlanner).expect("solvable")

@@ -1,10 +1,16 @@
 //! Run the 64×64 seven-room budget repeatedly, for profilers (`perf record`, callgrind).
-use mansion_benches::t2d_like;
+use mansion_benches::{t2d_like, with_widths};
 use mansion_core::seedplan::HeuristicPlanner;
 use mansion_core::solve::{solve_floor, SolveOptions};
 
 fn main() {
-    let (graph, fp, base) = t2d_like();
+    // a second argument `widths` adds width rules (rooms ≥ 1.0 m, hub ≥ 1.5 m, floor 1.0 m)
+    let widths = std::env::args().nth(2).is_some_and(|a| a == "widths");
+    let (graph, fp, base) = if widths {
+        with_widths(t2d_like(), 1.0, 1.5, 4)
+    } else {
+        t2d_like()
+    };
     let opts = SolveOptions {
         hierarchical: false,
         retries: 10,

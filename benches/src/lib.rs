@@ -146,6 +146,28 @@ pub fn office() -> (GraphSpec, FootprintSpec, SolveOptions) {
     (graph, fp, SolveOptions::default())
 }
 
+/// A case with width rules: every room of `graph` at least `room` metres wide, the hub at least
+/// `hub` metres, and the floor-wide rule of `floor` cells.
+pub fn with_widths(
+    (mut graph, fp, opts): (GraphSpec, FootprintSpec, SolveOptions),
+    room: f64,
+    hub: f64,
+    floor: usize,
+) -> (GraphSpec, FootprintSpec, SolveOptions) {
+    for n in graph.nodes.iter_mut() {
+        n.min_width = match n.kind.as_str() {
+            "main" => Some(hub),
+            "stair" | "elevator" => None,
+            _ => Some(room),
+        };
+    }
+    let opts = SolveOptions {
+        min_width: Some(floor),
+        ..opts
+    };
+    (graph, fp, opts)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -154,7 +176,12 @@ mod tests {
 
     #[test]
     fn both_cases_solve() {
-        for (g, f, o) in [t2d_like(), office()] {
+        for (g, f, o) in [
+            t2d_like(),
+            office(),
+            with_widths(office(), 1.0, 1.5, 2),
+            with_widths(t2d_like(), 1.0, 1.5, 4),
+        ] {
             let t = std::time::Instant::now();
             match solve_floor(&g, &f, &o, &mut HeuristicPlanner) {
                 Ok(s) => {

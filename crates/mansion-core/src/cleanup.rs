@@ -327,90 +327,83 @@ pub fn keep_largest_piece(
     }
 }
 
-/// The cells of round rooms that no `w × w` square of their own room covers, ascending, into
-/// `s.thin`; `w` is `widths[k]` for the room at round position `k` (`index[label]`), and rooms
-/// with `w ≤ 1` have no rule. One pass over the region's box serves every room: the largest
-/// same-label square ending at each cell (dynamic programming), the rule-sized squares marked in a
-/// difference array, and prefix sums to count the squares over each cell.
-pub fn thin_cells(grid: &Grid, region: &Region, index: &[i16], widths: &[u16], s: &mut Scratch) {
+/// The cells of rooms that no `w × w` square of their own room covers, ascending, into `s.thin`;
+/// `w` is `widths[label]` (a label past the end, or `w ≤ 1`: no rule). One pass over the region's
+/// box serves every room: the largest same-label square ending at each cell (dynamic
+/// programming), the rule-sized squares marked in a difference array, and prefix sums to count
+/// the squares over each cell.
+pub fn thin_cells(grid: &Grid, region: &Region, widths: &[u16], s: &mut Scratch) {
     s.thin.clear();
     let (x0, y0, x1, y1) = region.bbox;
     let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
-    let rule = |l: Label| -> u16 {
-        match index.get(l as usize) {
-            Some(&k) if k >= 0 => widths.get(k as usize).copied().unwrap_or(0),
-            _ => 0,
-        }
-    };
+    let gw = grid.w;
     s.square.clear();
     s.square.resize(bw * bh, 0);
     s.cover.clear();
     s.cover.resize((bw + 1) * (bh + 1), 0);
     let (sq, cover) = (&mut s.square, &mut s.cover);
+    let cw = bw + 1;
     let mut any = false;
     for y in 0..bh {
-        let row = (y + y0) * grid.w + x0;
+        let row = (y + y0) * gw + x0;
         for x in 0..bw {
             let c = row + x;
             let l = grid.cells[c];
-            if !region.inside[c] {
-                continue;
-            }
-            let width = rule(l) as usize;
-            if width <= 1 {
+            let width = widths.get(l as usize).copied().unwrap_or(0) as usize;
+            if width <= 1 || !region.inside[c] {
                 continue;
             }
             any = true;
-            let same = |dx: usize, dy: usize, v: u16| -> u16 {
-                if grid.cells[c - dx - dy * grid.w] == l {
-                    v
-                } else {
-                    0
-                }
-            };
+            // the square test needs the left, lower and lower-left cells in the same room; cells
+            // of other rooms (or outside the box) hold 0 or fail the label test
             let v = if x == 0 || y == 0 {
                 1
             } else {
-                1 + same(1, 0, sq[y * bw + x - 1])
-                    .min(same(0, 1, sq[(y - 1) * bw + x]))
-                    .min(same(1, 1, sq[(y - 1) * bw + x - 1]))
+                let at = |cell: usize, k: usize| if grid.cells[cell] == l { sq[k] } else { 0 };
+                1 + at(c - 1, y * bw + x - 1)
+                    .min(at(c - gw, (y - 1) * bw + x))
+                    .min(at(c - gw - 1, (y - 1) * bw + x - 1))
             };
             sq[y * bw + x] = v;
             if v as usize >= width {
                 let (ax, ay) = (x + 1 - width, y + 1 - width);
-                cover[ay * (bw + 1) + ax] += 1;
-                cover[ay * (bw + 1) + x + 1] -= 1;
-                cover[(y + 1) * (bw + 1) + ax] -= 1;
-                cover[(y + 1) * (bw + 1) + x + 1] += 1;
+                cover[ay * cw + ax] += 1;
+                cover[ay * cw + x + 1] -= 1;
+                cover[(y + 1) * cw + ax] -= 1;
+                cover[(y + 1) * cw + x + 1] += 1;
             }
         }
     }
     if !any {
         return;
     }
-    for y in 0..=bh {
-        for x in 1..=bw {
-            cover[y * (bw + 1) + x] += cover[y * (bw + 1) + x - 1];
+    // prefix sums, row by row: along x, then the finished row below added
+    for y in 0..bh {
+        let base = y * cw;
+        let mut run = 0;
+        for v in &mut cover[base..base + cw] {
+            run += *v;
+            *v = run;
         }
-    }
-    for y in 1..=bh {
-        for x in 0..=bw {
-            cover[y * (bw + 1) + x] += cover[(y - 1) * (bw + 1) + x];
+        if y > 0 {
+            let (below, this) = cover.split_at_mut(base);
+            for (v, b) in this[..cw].iter_mut().zip(&below[base - cw..]) {
+                *v += *b;
+            }
         }
     }
     for y in 0..bh {
-        let row = (y + y0) * grid.w + x0;
+        let row = (y + y0) * gw + x0;
         for x in 0..bw {
-            let c = row + x;
-            if sq[y * bw + x] > 0 && cover[y * (bw + 1) + x] <= 0 {
-                s.thin.push(c);
+            if sq[y * bw + x] > 0 && cover[y * cw + x] <= 0 {
+                s.thin.push(row + x);
             }
         }
     }
 }
 
 /// Width pass: every connected strip of cells narrower than its room's width rule (see
-/// [`thin_cells`]) goes to the round room that shares the longest boundary with it (ties to the
+/// [`thin_cells`]; `widths` by label) goes to the round room (`index[label] ≥ 0`) that shares the longest boundary with it (ties to the
 /// lower label); the receiver's own rule is tested again on the next pass. Fixed walls neither
 /// join a strip nor count as boundary. The rooms that gave cells away
 /// are left in `s.donors`. Returns the number of cells handed over.
@@ -423,7 +416,7 @@ pub fn hand_over_thin(
     s: &mut Scratch,
 ) -> usize {
     s.donors.clear();
-    thin_cells(grid, region, index, widths, s);
+    thin_cells(grid, region, widths, s);
     if s.thin.is_empty() {
         return 0;
     }
@@ -495,7 +488,8 @@ pub const MAX_WIDTH_PASSES: usize = 6;
 /// Width passes until no room holds a strip narrower than its rule (or [`MAX_WIDTH_PASSES`]):
 /// hand the strips over ([`hand_over_thin`]), keep each donor's largest piece (a neck removed can
 /// split a room) and run the fill-then-clean cycle again, since handing over can leave spurs.
-/// Returns false when empty cells remain that no region room touches.
+/// Returns `None` when empty cells remain that no region room touches, else whether every room
+/// now satisfies its rule.
 pub fn clean_widths(
     grid: &mut Grid,
     region: &Region,
@@ -503,10 +497,10 @@ pub fn clean_widths(
     index: &[i16],
     widths: &[u16],
     s: &mut Scratch,
-) -> bool {
+) -> Option<bool> {
     for _ in 0..MAX_WIDTH_PASSES {
         if hand_over_thin(grid, region, walls, index, widths, s) == 0 {
-            return true;
+            return Some(true);
         }
         let donors = std::mem::take(&mut s.donors);
         for &l in &donors {
@@ -514,10 +508,11 @@ pub fn clean_widths(
         }
         s.donors = donors;
         if !clean(grid, region, walls, s) {
-            return false;
+            return None;
         }
     }
-    true
+    thin_cells(grid, region, widths, s);
+    Some(s.thin.is_empty())
 }
 
 /// The fill-then-clean cycle: fill holes, remove spurs, repeat until a pass removes no spur or
@@ -651,13 +646,16 @@ mod tests {
         let index = all_round();
         let mut widths = vec![0u16; 10];
         widths[1] = 2;
-        thin_cells(&g, &r, &index, &widths, &mut s);
+        thin_cells(&g, &r, &widths, &mut s);
         assert_eq!(s.thin.len(), 4, "the tail is four cells");
-        assert!(clean_widths(&mut g, &r, &walls, &index, &widths, &mut s));
+        assert_eq!(
+            clean_widths(&mut g, &r, &walls, &index, &widths, &mut s),
+            Some(true)
+        );
         assert_eq!(g.count(1), 9);
         assert_eq!(g.count(2), 12);
         assert!(crate::topology::min_width_ok(&g, &r, 1, 2));
-        thin_cells(&g, &r, &index, &widths, &mut s);
+        thin_cells(&g, &r, &widths, &mut s);
         assert!(s.thin.is_empty());
     }
 
@@ -674,7 +672,10 @@ mod tests {
         let mut widths = vec![0u16; 10];
         widths[1] = 3;
         widths[2] = 3;
-        assert!(clean_widths(&mut g, &r, &walls, &index, &widths, &mut s));
+        assert_eq!(
+            clean_widths(&mut g, &r, &walls, &index, &widths, &mut s),
+            Some(true)
+        );
         assert_eq!(g, before);
     }
 
@@ -688,8 +689,11 @@ mod tests {
         let index = all_round();
         let mut widths = vec![0u16; 10];
         widths[1] = 2;
-        assert!(clean_widths(&mut g, &r, &walls, &index, &widths, &mut s));
-        thin_cells(&g, &r, &index, &widths, &mut s);
+        assert_eq!(
+            clean_widths(&mut g, &r, &walls, &index, &widths, &mut s),
+            Some(true)
+        );
+        thin_cells(&g, &r, &widths, &mut s);
         assert!(s.thin.is_empty());
         // room 1 is in one piece, wide everywhere
         let pieces = crate::topology::pieces_all(&g, &r, &index, 10, &mut s);
@@ -727,14 +731,15 @@ mod tests {
             }
             let outside: Vec<usize> = (0..g.cells.len()).filter(|&c| !r.inside[c]).collect();
             let before = g.clone();
-            if !clean_widths(&mut g, &r, &walls, &index, &widths, &mut s) {
+            let Some(clean) = clean_widths(&mut g, &r, &walls, &index, &widths, &mut s) else {
                 continue;
-            }
+            };
             assert_eq!(g.count(EMPTY), 0);
             assert!(outside.iter().all(|&c| g.cells[c] == before.cells[c]));
             // the filter's test agrees with the square test room by room: a candidate either has
             // every ruled room wide enough, or it is reported (and rejected)
-            thin_cells(&g, &r, &index, &widths, &mut s);
+            thin_cells(&g, &r, &widths, &mut s);
+            assert_eq!(clean, s.thin.is_empty());
             for l in 1..6 as Label {
                 let wd = widths[l as usize] as usize;
                 let ok = crate::topology::min_width_ok(&g, &r, l, wd);

@@ -178,8 +178,8 @@ pub struct Prepared<'a> {
     pub seeds: Vec<Option<[f64; 2]>>,
     /// label → position in `labels`, or -1.
     pub index: Vec<i16>,
-    /// Width rule in cells of each round label (by position in `labels`): final labels only,
-    /// ≤ 1 for none.
+    /// Width rule in cells of each label (indexed by label): final round labels only, ≤ 1 for
+    /// none.
     pub widths: Vec<u16>,
     /// Does any round label have a width rule? (Candidates without one skip the width passes.)
     pub width_rules: bool,
@@ -240,16 +240,14 @@ impl<'a> Prepared<'a> {
             index[l as usize] = k as i16;
         }
         let field = Field::new(&base, walls);
-        let widths: Vec<u16> = labels
-            .iter()
-            .map(|&l| {
-                if !spec.final_labels.contains(&l) {
-                    return 0;
-                }
+        let mut widths = vec![0u16; n_labels];
+        for &l in &labels {
+            if spec.final_labels.contains(&l) {
                 let own = opts.widths.get(l as usize).copied().unwrap_or(0);
-                own.max(opts.min_width.unwrap_or(0)).min(u16::MAX as usize) as u16
-            })
-            .collect();
+                widths[l as usize] =
+                    own.max(opts.min_width.unwrap_or(0)).min(u16::MAX as usize) as u16;
+            }
+        }
         let width_rules = widths.iter().any(|&w| w > 1);
         Prepared {
             spec,
@@ -424,19 +422,26 @@ impl<'a> Prepared<'a> {
         if !cleanup::clean(&mut grid, &self.region, self.walls, s) {
             return Err(Reject::Unfilled);
         }
-        if self.width_rules
-            && !cleanup::clean_widths(
+        let mut too_narrow = false;
+        if self.width_rules {
+            match cleanup::clean_widths(
                 &mut grid,
                 &self.region,
                 self.walls,
                 &self.index,
                 &self.widths,
                 s,
-            )
-        {
-            return Err(Reject::Unfilled);
+            ) {
+                None => return Err(Reject::Unfilled),
+                Some(clean) => too_narrow = !clean,
+            }
         }
         self.check(&grid, s)?;
+        if too_narrow {
+            // `s.thin` still holds the cells the last width pass could not fix
+            let l = s.thin.first().map_or(self.spec.parent, |&c| grid.cells[c]);
+            return Err(Reject::TooNarrow(l));
+        }
         let mut feats = energy::features(
             &grid,
             &self.region,
@@ -449,7 +454,8 @@ impl<'a> Prepared<'a> {
         Ok((e, grid, feats))
     }
 
-    /// The topology filter.
+    /// The topology filter (width rules are tested in [`Prepared::finish`], where the width
+    /// passes already know the answer).
     pub fn check(&self, grid: &Grid, s: &mut Scratch) -> Result<(), Reject> {
         let pieces = topology::pieces_all(grid, &self.region, &self.index, self.labels.len(), s);
         for (&l, &n) in self.labels.iter().zip(&pieces) {
@@ -462,12 +468,6 @@ impl<'a> Prepared<'a> {
         for &l in &self.spec.final_labels {
             if topology::straddles(grid, &self.region, self.walls, l) {
                 return Err(Reject::Straddles(l));
-            }
-        }
-        if self.width_rules {
-            cleanup::thin_cells(grid, &self.region, &self.index, &self.widths, s);
-            if let Some(&c) = s.thin.first() {
-                return Err(Reject::TooNarrow(grid.cells[c]));
             }
         }
         let contacts =
