@@ -1,0 +1,120 @@
+"""Room width rules: ``RoomNode.min_width`` (metres) and the floor-wide ``SolverSettings.min_width``
+(cells) are honoured by the laid-out polygons, the layouts still tile the free region, and the
+building generator relaxes width rules at the end of its retry ladder instead of failing."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from shapely.geometry import Polygon
+from test_solver_properties import CELL, check_layout, instance
+
+import mansion
+import mansion.building.generate as gen
+from mansion import Footprint, InfeasibleLayoutError, RoomGraph
+
+#: Narrow parts smaller than this (m²) would be polygon rounding, not a strip (a cell is 0.25 m²).
+SLACK = 1e-6
+
+
+def narrow_area(poly: Polygon, width: float) -> float:
+    """Area of ``poly`` that no ``width × width`` square inside it covers (a morphological opening
+    by that square; mitred buffers of axis-aligned polygons are exactly the square's)."""
+    r = width / 2 - 0.01  # a centimetre of slack: erosion to a hairline is numerically empty
+    opened = poly.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
+    return poly.area - opened.intersection(poly).area
+
+
+def with_widths(graph: RoomGraph, room: float, hub: float) -> RoomGraph:
+    nodes = [n.model_copy(update={"min_width": hub if n.type == "main" else room}) for n in graph.nodes]
+    return RoomGraph(nodes=nodes, edges=graph.edges)
+
+
+def office_floor() -> tuple[RoomGraph, Footprint]:
+    rooms = {"office_1": 14.0, "office_2": 14.0, "meeting": 18.0, "toilet": 4.0, "store": 5.0,
+             "kitchen": 9.0, "copy": 4.0, "phone": 3.0}
+    graph = RoomGraph.model_validate({
+        "nodes": [{"id": "corridor", "type": "main", "area": 24.0}]
+        + [{"id": k, "type": "area", "area": a} for k, a in rooms.items()],
+        "edges": [{"source": "corridor", "target": k} for k in rooms],
+    })
+    return graph, Footprint.from_mask(np.ones((20, 24), dtype=bool), CELL)
+
+
+def test_solve_floor_honours_each_rooms_min_width() -> None:
+    graph, footprint = office_floor()
+    ruled = with_widths(graph, room=1.0, hub=1.5)
+    for seed in range(4):
+        layout = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed)
+        check_layout(layout, footprint, np.ones((20, 24), dtype=bool))
+        widths = {n.id: n.min_width for n in ruled.nodes}
+        for room in layout.rooms:
+            poly = Polygon(room.polygon, room.holes)
+            assert narrow_area(poly, widths[room.id]) < SLACK, (seed, room.id)
+
+
+def test_the_floor_wide_min_width_holds_for_every_room_and_the_hub() -> None:
+    graph, footprint = office_floor()
+    layout = mansion.solve_floor(graph, footprint, cell_size=CELL, settings={"min_width": 2})
+    for room in layout.rooms:
+        assert narrow_area(Polygon(room.polygon, room.holes), 2 * CELL) < SLACK, room.id
+
+
+def test_a_rule_wider_than_the_room_can_hold_is_capped_not_fatal() -> None:
+    graph, footprint = office_floor()
+    # a 3 m² phone booth cannot hold a 2 m square; its rule shrinks to the 1.5 m its area holds
+    nodes = [n.model_copy(update={"min_width": 2.0 if n.id == "phone" else None}) for n in graph.nodes]
+    layout = mansion.solve_floor(RoomGraph(nodes=nodes, edges=graph.edges), footprint, cell_size=CELL)
+    phone = next(r for r in layout.rooms if r.id == "phone")
+    assert narrow_area(Polygon(phone.polygon, phone.holes), 1.5) < SLACK
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(st.integers(min_value=0, max_value=10**9), st.sampled_from([1.0, 1.5]))
+def test_width_ruled_layouts_tile_the_free_region(seed: int, width: float) -> None:
+    built = instance(seed)
+    if built is None:
+        return
+    graph, footprint, mask = built
+    ruled = with_widths(graph, room=width, hub=width)
+    try:
+        layout = mansion.solve_floor(ruled, footprint, cell_size=CELL, retries=4, batch=40)
+    except InfeasibleLayoutError as e:
+        assert "rejected" in str(e)
+        return
+    check_layout(layout, footprint, mask)
+    for room in layout.rooms:
+        node = next(n for n in ruled.nodes if n.id == room.id)
+        cells = node.area / CELL**2
+        # the rule is capped at the side of the largest square the room's area holds
+        rule = min(width, max(1, int(cells**0.5)) * CELL)
+        assert narrow_area(Polygon(room.polygon, room.holes), rule) < SLACK, room.id
+
+
+def test_generated_floors_have_no_part_narrower_than_a_metre() -> None:
+    b = mansion.generate_building("a two-storey office", building_type="office", floors=2, seed=3)
+    for f in b.floors:
+        cores = {n.id for n in f.graph.nodes if n.is_core}
+        for room in f.layout.rooms:
+            if room.id not in cores:
+                assert narrow_area(Polygon(room.polygon, room.holes), gen.MIN_CLEAR_WIDTH) < SLACK
+
+
+def test_width_rules_are_relaxed_last_and_recorded(monkeypatch: pytest.MonkeyPatch) -> None:
+    real = gen.solve_floor
+    calls = []
+
+    def widths_fail(graph: RoomGraph, footprint: Footprint, **kwargs: object) -> mansion.FloorLayout:
+        ruled = kwargs["settings"].min_width is not None or any(n.min_width for n in graph.nodes)
+        calls.append(ruled)
+        if ruled:
+            raise InfeasibleLayoutError("every candidate was rejected: too narrow")
+        return real(graph, footprint, **kwargs)
+
+    monkeypatch.setattr(gen, "solve_floor", widths_fail)
+    b = gen.generate_building("a studio", building_type="studio", floors=1, seed=0)
+    f = b.floors[0]
+    assert f.attempts == gen.ATTEMPTS and calls[-1] is False
+    assert any("minimum clear width" in r for r in f.relaxations)
