@@ -11,17 +11,13 @@ import json
 
 import pytest
 
-from mansion import EnergyWeights
-
 from mansion import generate_building
 from mansion.agents.building_graph import run_building_graph
+from mansion.building.generate import solver_options
 from mansion.planning.planner import Constraints, OfflinePlanner
 
 # what generate_building hands the solver by default
-SOLVER = {
-    "cell_size": 0.5, "retries": 10, "batch": 100, "min_contact": 1.0,
-    "weights": EnergyWeights.paper(),
-}
+SOLVER = solver_options()
 
 
 def _plain(building) -> dict:

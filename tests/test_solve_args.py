@@ -22,7 +22,10 @@ def test_default_options_match_the_binding_contract() -> None:
         "min_contact": 1.0,
         "hierarchical": True,
         "rng_seed": 0,
-        "weights": {"ratio": 1.28, "seed": 0.21, "drift": 17.65, "wall": 0.57, "corner": 0.29},
+        "weights": {
+            "ratio": 1.28, "seed": 0.21, "drift": 17.65, "wall": 0.57, "corner": 0.29, "rect": 0.0,
+            "aspect": 0.0,
+        },
         "k": 8.0,
         "gammas": [0.25, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0],
         "seed_separation": 2.0,
@@ -39,7 +42,9 @@ def test_options_take_models_and_dicts() -> None:
         rng_seed=2**64 - 1,
         hierarchical=False,
     )
-    assert opts["weights"] == {"ratio": 1.28, "seed": 0.21, "drift": 17.65, "wall": 0.0, "corner": 0.29}
+    assert opts["weights"] == {
+        "ratio": 1.28, "seed": 0.21, "drift": 17.65, "wall": 0.0, "corner": 0.29, "rect": 0.0, "aspect": 0.0,
+    }
     assert opts["k"] == 2.0 and opts["gammas"] == [1.0, 2.0] and opts["min_width"] == 2
     assert opts["hierarchical"] is False
     assert build_options(weights=EnergyWeights(ratio=1.0))["weights"]["ratio"] == 1.0

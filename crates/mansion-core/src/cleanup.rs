@@ -500,7 +500,8 @@ pub fn clean_widths(
 ) -> Option<bool> {
     for _ in 0..MAX_WIDTH_PASSES {
         if hand_over_thin(grid, region, walls, index, widths, s) == 0 {
-            return Some(true);
+            // nothing thin, or only strips no round room can take (`s.thin` keeps them)
+            return Some(s.thin.is_empty());
         }
         let donors = std::mem::take(&mut s.donors);
         for &l in &donors {
@@ -657,6 +658,28 @@ mod tests {
         assert!(crate::topology::min_width_ok(&g, &r, 1, 2));
         thin_cells(&g, &r, &widths, &mut s);
         assert!(s.thin.is_empty());
+    }
+
+    #[test]
+    fn a_strip_no_round_room_can_take_is_reported() {
+        // room 1's one-cell tail touches only room 3, which is not a round label
+        let mut g = parse(&["1113333", "1111###", "111####"]);
+        let mut marked = g.clone();
+        for c in marked.cells.iter_mut() {
+            *c = if *c == 1 { 0 } else { OUTSIDE };
+        }
+        let r = Region::of_label(&marked, 0);
+        let mut s = Scratch::new(g.cells.len());
+        let walls = Walls::none(g.w, g.h);
+        let mut index = vec![-1i16; 10];
+        index[1] = 0;
+        let mut widths = vec![0u16; 10];
+        widths[1] = 2;
+        assert_eq!(
+            clean_widths(&mut g, &r, &walls, &index, &widths, &mut s),
+            Some(false)
+        );
+        assert_eq!(s.thin.len(), 1);
     }
 
     #[test]

@@ -51,6 +51,7 @@ __all__ = [
     "floor_footprint",
     "generate_building",
     "solve_building_floor",
+    "solver_options",
 ]
 
 #: Solver attempts per floor: two plain seeds, then without adjacent edges, then without walls,
@@ -86,6 +87,21 @@ def _room_cards(graph: RoomGraph, notes: dict[str, str]) -> list[RoomCard]:
         )
         for n in graph.nodes
     ]
+
+
+def solver_options(
+    cell_size: float = 0.5,
+    retries: int = 10,
+    batch: int = 100,
+    min_contact: float = 1.0,
+    weights: EnergyWeights | None = None,
+) -> dict[str, Any]:
+    """The keyword arguments of :func:`mansion.solve_floor` for a generated building's floors."""
+    return {
+        "cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact,
+        "weights": weights if weights is not None else EnergyWeights.paper(),
+        "settings": floor_settings(cell_size),
+    }
 
 
 def _without_adjacent(graph: RoomGraph) -> RoomGraph:
@@ -198,11 +214,7 @@ def generate_building(
         floors=floors, area=area, outline=_footprint_outline(footprint),
         max_floor_area=max_floor_area, building_type=building_type, load_bearing=load_bearing,
     )
-    solver = {
-        "cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact,
-        "weights": weights if weights is not None else EnergyWeights.paper(),
-        "settings": floor_settings(cell_size),
-    }
+    solver = solver_options(cell_size, retries, batch, min_contact, weights)
     if not isinstance(plan, OfflinePlanner):
         # LLM planners wait on the network: the LangGraph pipeline fans the floors out. It is
         # imported only here so the offline path never loads langgraph.
