@@ -463,8 +463,18 @@ def test_object_blocking_a_doorway_makes_the_room_unreachable(golden_house: dict
     h = copy.deepcopy(golden_house)
     house = House.model_validate(h)
     ways = room_entrances(house)
-    # a furnished room with a single door: a wardrobe pushed against the doorway shuts it
-    rid = next(r for r, w in ways.items() if len(w) == 1 and len(_objects(h, r)) >= 3)
+    # a furnished room with a single door: a dresser wider than the doorway, pushed against it,
+    # shuts it (the widest shallow dresser, and a room whose door it covers)
+    bed = max(
+        (a for a, rec in asset_ids().items()
+         if rec["objectType"] == "Dresser" and rec["boundingBox"]["z"] <= 0.6),
+        key=lambda a: asset_ids()[a]["boundingBox"]["x"],
+    )
+    reach = asset_ids()[bed]["boundingBox"]["x"] - 0.2
+    rid = next(
+        r for r, w in ways.items()
+        if len(w) == 1 and len(_objects(h, r)) >= 3 and w[0].width <= reach
+    )
     door = ways[rid][0]
     room = Polygon([(p.x, p.z) for p in next(r for r in house.rooms if r.id == rid).floor_polygon])
     (ax, az), (bx, bz) = door.a, door.b
@@ -472,9 +482,7 @@ def test_object_blocking_a_doorway_makes_the_room_unreachable(golden_house: dict
     nx, nz = -(bz - az) / door.width, (bx - ax) / door.width
     if not room.contains(__import__("shapely").Point(mx + nx * 0.3, mz + nz * 0.3)):
         nx, nz = -nx, -nz
-    # Bed assets are about 2 m wide; turned along the wall it covers the whole doorway
-    bed = next(a for a, rec in asset_ids().items() if rec["objectType"] == "Dresser"
-               and rec["boundingBox"]["x"] >= door.width + 0.2 and rec["boundingBox"]["z"] <= 0.6)
+    # turned along the wall, the dresser covers the whole doorway
     depth = asset_ids()[bed]["boundingBox"]["z"]
     yaw = math.degrees(math.atan2(nx, nz))
     h["objects"].append({
