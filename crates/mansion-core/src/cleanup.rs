@@ -28,8 +28,8 @@ pub struct Scratch {
     pub holes: Vec<usize>,
     /// Side of the largest same-label square ending at each cell of the region's box (width rule).
     pub square: Vec<u16>,
-    /// 2-D difference array, then counts, of rule-sized squares covering each cell of the box.
-    pub cover: Vec<i32>,
+    /// Per column of the region's box, rows to the nearest cell a rule-sized square reaches.
+    pub column: Vec<u16>,
     /// Cells narrower than their room's width rule.
     pub thin: Vec<usize>,
     /// Rooms that gave cells away in a width pass.
@@ -328,84 +328,119 @@ pub fn keep_largest_piece(
 }
 
 /// The cells of rooms that no `w × w` square of their own room covers, ascending, into `s.thin`;
-/// `w` is `widths[label]` (a label past the end, or `w ≤ 1`: no rule). One pass over the region's
-/// box serves every room: the largest same-label square ending at each cell (dynamic
-/// programming), the rule-sized squares marked in a difference array, and prefix sums to count
-/// the squares over each cell.
+/// `w` is `widths[label]` (a label past the end, or `w ≤ 1`: no rule).
+///
+/// One sweep of the region's box serves every room. Bottom-up, the side of the largest
+/// same-label square whose top-right corner is each cell (dynamic programming); a cell where that
+/// side reaches the room's rule is the corner of a rule-sized square. Such a square covers the
+/// cells up to `w − 1` to its left and below, all of its own room, so right to left along each
+/// row the distance to the nearest corner (within one run of the room) tells whether some square
+/// reaches the cell's column band, and top-down along each column the distance to the nearest
+/// such cell (within one run of the room) whether one reaches the cell.
 pub fn thin_cells(grid: &Grid, region: &Region, widths: &[u16], s: &mut Scratch) {
+    const FAR: u16 = u16::MAX;
     s.thin.clear();
     let (x0, y0, x1, y1) = region.bbox;
     let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
     let gw = grid.w;
     s.square.clear();
     s.square.resize(bw * bh, 0);
-    s.cover.clear();
-    s.cover.resize((bw + 1) * (bh + 1), 0);
-    let (sq, cover) = (&mut s.square, &mut s.cover);
-    let cw = bw + 1;
+    // square sides of the row below and of this row (the box's `square` gets distances instead)
+    s.column.clear();
+    s.column.resize(2 * bw, 0);
+    let sq = &mut s.square;
+    let (below, this) = s.column.split_at_mut(bw);
+    let rule = |l: Label| widths.get(l as usize).copied().unwrap_or(0);
     let mut any = false;
     for y in 0..bh {
         let row = (y + y0) * gw + x0;
+        let line = y * bw;
+        this.iter_mut().for_each(|v| *v = 0);
         for x in 0..bw {
             let c = row + x;
             let l = grid.cells[c];
-            let width = widths.get(l as usize).copied().unwrap_or(0) as usize;
-            if width <= 1 || !region.inside[c] {
+            if rule(l) <= 1 || !region.inside[c] {
                 continue;
             }
             any = true;
-            // the square test needs the left, lower and lower-left cells in the same room; cells
-            // of other rooms (or outside the box) hold 0 or fail the label test
-            let v = if x == 0 || y == 0 {
+            this[x] = if x == 0 || y == 0 {
                 1
             } else {
-                let at = |cell: usize, k: usize| if grid.cells[cell] == l { sq[k] } else { 0 };
-                1 + at(c - 1, y * bw + x - 1)
-                    .min(at(c - gw, (y - 1) * bw + x))
-                    .min(at(c - gw - 1, (y - 1) * bw + x - 1))
+                // cells of other rooms hold 0 or fail the label test
+                let at = |cell: usize, v: u16| if grid.cells[cell] == l { v } else { 0 };
+                1 + at(c - 1, this[x - 1])
+                    .min(at(c - gw, below[x]))
+                    .min(at(c - gw - 1, below[x - 1]))
             };
-            sq[y * bw + x] = v;
-            if v as usize >= width {
-                let (ax, ay) = (x + 1 - width, y + 1 - width);
-                cover[ay * cw + ax] += 1;
-                cover[ay * cw + x + 1] -= 1;
-                cover[(y + 1) * cw + ax] -= 1;
-                cover[(y + 1) * cw + x + 1] += 1;
+        }
+        sq[line..line + bw].copy_from_slice(this);
+        below.copy_from_slice(this);
+        if !any {
+            continue;
+        }
+        // right to left: distance to the nearest square corner of the same room along the row
+        let mut d = FAR;
+        for x in (0..bw).rev() {
+            let k = line + x;
+            let v = sq[k];
+            if v == 0 {
+                d = FAR;
+                continue;
             }
+            let l = grid.cells[row + x];
+            let w = rule(l);
+            let same = x + 1 < bw && grid.cells[row + x + 1] == l && sq[k + 1] > 0;
+            d = if v >= w {
+                0
+            } else if same {
+                d.saturating_add(1)
+            } else {
+                FAR
+            };
+            // keep 1 + the distance so that 0 still means "no rule here"
+            sq[k] = d.saturating_add(1);
         }
     }
     if !any {
         return;
     }
-    // prefix sums, row by row: along x, then the finished row below added
-    for y in 0..bh {
-        let base = y * cw;
-        let mut run = 0;
-        for v in &mut cover[base..base + cw] {
-            run += *v;
-            *v = run;
-        }
-        if y > 0 {
-            let (below, this) = cover.split_at_mut(base);
-            for (v, b) in this[..cw].iter_mut().zip(&below[base - cw..]) {
-                *v += *b;
-            }
-        }
-    }
-    for y in 0..bh {
+    // top-down: distance to the nearest row whose run reaches this column, within the room
+    s.column.clear();
+    s.column.resize(bw, FAR);
+    let col = &mut s.column;
+    let first = s.thin.len();
+    for y in (0..bh).rev() {
         let row = (y + y0) * gw + x0;
+        let line = y * bw;
         for x in 0..bw {
-            if sq[y * bw + x] > 0 && cover[y * cw + x] <= 0 {
+            let v = sq[line + x];
+            if v == 0 {
+                col[x] = FAR;
+                continue;
+            }
+            let l = grid.cells[row + x];
+            let w = rule(l);
+            let same = y + 1 < bh && grid.cells[row + gw + x] == l && sq[line + bw + x] > 0;
+            col[x] = if v - 1 < w {
+                0
+            } else if same {
+                col[x].saturating_add(1)
+            } else {
+                FAR
+            };
+            if col[x] >= w {
                 s.thin.push(row + x);
             }
         }
     }
+    // rows were read top-down; the contract is ascending cell order
+    s.thin[first..].sort_unstable();
 }
 
 /// Width pass: every connected strip of cells narrower than its room's width rule (see
 /// [`thin_cells`]; `widths` by label) goes to the round room (`index[label] ≥ 0`) that shares the longest boundary with it (ties to the
 /// lower label); the receiver's own rule is tested again on the next pass. Fixed walls neither
-/// join a strip nor count as boundary. The rooms that gave cells away
+/// join a strip nor count as boundary. Nothing moves when there are `limit` thin cells or more. The rooms that gave cells away
 /// are left in `s.donors`. Returns the number of cells handed over.
 pub fn hand_over_thin(
     grid: &mut Grid,
@@ -413,11 +448,12 @@ pub fn hand_over_thin(
     walls: &Walls,
     index: &[i16],
     widths: &[u16],
+    limit: usize,
     s: &mut Scratch,
 ) -> usize {
     s.donors.clear();
     thin_cells(grid, region, widths, s);
-    if s.thin.is_empty() {
+    if s.thin.is_empty() || s.thin.len() >= limit {
         return 0;
     }
     let w = grid.w;
@@ -481,8 +517,9 @@ pub fn hand_over_thin(
     moved
 }
 
-/// Cap on width passes: strips bounce between two rooms only in regions too tight for both rules,
-/// and the candidate filter rejects those anyway.
+/// Cap on width passes. Strips bounce between two rooms only in regions too tight for both
+/// rules, and the candidate filter rejects those anyway; a pass that finds no fewer thin cells
+/// than the one before ends the passes early.
 pub const MAX_WIDTH_PASSES: usize = 6;
 
 /// Width passes until no room holds a strip narrower than its rule (or [`MAX_WIDTH_PASSES`]):
@@ -498,11 +535,14 @@ pub fn clean_widths(
     widths: &[u16],
     s: &mut Scratch,
 ) -> Option<bool> {
+    let mut before = usize::MAX;
     for _ in 0..MAX_WIDTH_PASSES {
-        if hand_over_thin(grid, region, walls, index, widths, s) == 0 {
-            // nothing thin, or only strips no round room can take (`s.thin` keeps them)
+        // stops with nothing thin, with only strips no round room can take, or with no fewer thin
+        // cells than the pass before (strips bouncing between rooms); `s.thin` keeps them
+        if hand_over_thin(grid, region, walls, index, widths, before, s) == 0 {
             return Some(s.thin.is_empty());
         }
+        before = s.thin.len();
         let donors = std::mem::take(&mut s.donors);
         for &l in &donors {
             keep_largest_piece(grid, region, walls, l, s);
