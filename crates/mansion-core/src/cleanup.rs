@@ -202,13 +202,7 @@ pub fn fill_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scrat
                 }
             }
         }
-        // longest shared boundary wins; ties go to the lower label so results are deterministic
-        let winner = s
-            .counts
-            .iter()
-            .max_by(|a, b| a.1.cmp(&b.1).then(b.0.cmp(&a.0)))
-            .map(|e| e.0);
-        match winner {
+        match longest_boundary(&s.counts) {
             Some(l) => {
                 for &c in &s.list {
                     grid.cells[c] = l;
@@ -219,6 +213,15 @@ pub fn fill_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scrat
     }
     s.holes = holes;
     all_filled
+}
+
+/// The room with the longest shared boundary among `(label, edges)` counts; ties go to the lower
+/// label so results are deterministic.
+fn longest_boundary(counts: &[(Label, u32)]) -> Option<Label> {
+    counts
+        .iter()
+        .max_by(|a, b| a.1.cmp(&b.1).then(b.0.cmp(&a.0)))
+        .map(|e| e.0)
 }
 
 /// The region's `EMPTY` cells, ascending, into `out`; rows are read sixteen cells at a time
@@ -498,12 +501,7 @@ pub fn hand_over_thin(
                 }
             }
         }
-        let winner = s
-            .counts
-            .iter()
-            .max_by(|a, b| a.1.cmp(&b.1).then(b.0.cmp(&a.0)))
-            .map(|e| e.0);
-        if let Some(m) = winner {
+        if let Some(m) = longest_boundary(&s.counts) {
             for &c in &s.list {
                 grid.cells[c] = m;
             }
