@@ -42,6 +42,7 @@ from mansion.placement.place import (
     furnish_rooms,
     thor_objects,
 )
+from mansion.scene.databases import asset_ids
 from mansion.scene.entrances import room_entrances
 from mansion.scene.house import Furnishing, House, HouseObject, RoomFurnishing
 
@@ -62,6 +63,26 @@ class FurnishJob:
     house: House
     room_types: dict[str, str]
     seed: int
+
+
+def _under_ceiling(house: House, objects: list[HouseObject]) -> list[HouseObject]:
+    """The objects without anything reaching above the ceiling (a statue on a tall shelf):
+    such a small object is left out, a floor object too tall for the room too."""
+    record = house.metadata.mansion
+    if record is None:
+        return objects
+    db = asset_ids()
+
+    def top(o: HouseObject) -> float:
+        return o.position.y + db[o.asset_id]["boundingBox"]["y"] / 2 if o.asset_id in db else 0.0
+
+    out = []
+    for o in objects:
+        if top(o) > record.ceiling_height:
+            continue
+        o.children = [c for c in o.children if top(c) <= record.ceiling_height]
+        out.append(o)
+    return out
 
 
 def _room_seed(seed: int, house_id: str, room_id: str) -> int:
@@ -217,12 +238,13 @@ def furnish_houses(
         if isinstance(result, MansionError):
             records[k][room_id] = RoomFurnishing(status="failed", reason=str(result))
             continue
-        objects = [HouseObject.model_validate(o) for o in thor_objects(result)]
+        objects = _under_ceiling(job.house, [HouseObject.model_validate(o) for o in thor_objects(result)])
         placed.setdefault(k, []).extend(objects)
         dropped = sum(d.count for d in result.dropped)
         if objects:
             records[k][room_id] = RoomFurnishing(
-                status="furnished", objects=len(objects), small_objects=result.small_count,
+                status="furnished", objects=len(objects),
+                small_objects=sum(len(o.children) for o in objects),
                 dropped=dropped, reason=notes.get(i),
             )
         else:

@@ -70,7 +70,7 @@ from mansion.exceptions import InvalidInputError
 from mansion.placement import check
 from mansion.placement.assets import FRONT_TYPES, TABLES, TUCKABLE
 from mansion.scene import navigation
-from mansion.scene.databases import asset_ids, material_names, skyboxes, wall_holes
+from mansion.scene.databases import asset_ids, hole_asset_position, material_names, skyboxes
 from mansion.scene.entrances import room_entrances
 from mansion.scene.house import HOUSE_SCHEMA, House, HouseObject, Vec3, Wall
 from mansion.scene.manifest import BuildingManifest
@@ -80,7 +80,6 @@ __all__ = [
     "Problem",
     "TUCKED_OVERLAP",
     "errors",
-    "hole_asset_position",
     "validate_building",
     "validate_house",
     "validate_path",
@@ -107,6 +106,8 @@ EPS = 1e-4
 HOLE_TOLERANCE = 1e-3
 #: An object's footprint may leave its room by this much (issue 6's #OB: 1 cm).
 OBJECT_TOLERANCE = 0.01
+#: A small object may rest this far above its receptacle's box (ProcTHOR's: up to 6 cm) (m).
+SETTLE = 0.08
 #: Two floor objects overlap when they share more than this (m², issue 6's #CN).
 OVERLAP_AREA = 1e-4
 #: The agent reaches an object from a free cell this close to its footprint (m).
@@ -156,18 +157,6 @@ class Problem:
 def errors(problems: list[Problem]) -> list[Problem]:
     """The problems that are errors."""
     return [p for p in problems if p.severity == "error"]
-
-
-def hole_asset_position(asset_id: str, lo: tuple[float, float]) -> tuple[float, float] | None:
-    """ProcTHOR's ``assetPosition`` (x, y) of a door or window asset whose hole starts at ``lo``
-    (wall0's frame): the hole's minimum + the asset's offset in the wall-holes database + half
-    its bounding box. None for an asset either database lacks."""
-    hole = wall_holes().get(asset_id.replace("Doorframe", "Doorway"))
-    rec = asset_ids().get(asset_id)
-    if hole is None or rec is None:
-        return None
-    bb, off = rec["boundingBox"], hole["offset"]
-    return (lo[0] + off["x"] + bb["x"] / 2, lo[1] + off["y"] + bb["y"] / 2)
 
 
 def _xz(v: Vec3) -> tuple[float, float]:
@@ -516,8 +505,9 @@ class _HouseCheck:
             if c.fp.difference(area).area > 1e-6:
                 self.add("object-child", child.id, f"footprint leaves its receptacle {parent.obj.id!r}")
             bottom = child.position.y - c.height / 2
-            # on its receptacle's top, or inside it (a shelf's or a fridge's own shelves)
-            if not base - OBJECT_TOLERANCE <= bottom <= top + OBJECT_TOLERANCE:
+            # on its receptacle's top (ProcTHOR's settle up to a few cm above it), or inside it
+            # (a shelf's or a fridge's own shelves)
+            if not base - OBJECT_TOLERANCE <= bottom <= top + SETTLE:
                 self.add("object-child", child.id, f"rests at y = {bottom:.3f}, neither on nor in "
                          f"{parent.obj.id!r} (y {base:.3f}..{top:.3f})")
             if child.children:
