@@ -44,6 +44,8 @@ from mansion.scene.house import (
 from mansion.scene.interfaces import Interface, Pt, RoomRings, find_interfaces, oriented
 from mansion.scene.manifest import BuildingManifest, CoreLanding, ManifestCore, ManifestFloor
 from mansion.scene.materials import floor_material, wall_material
+from mansion.scene.navigation import AGENT_RADIUS, open_space, reached_rooms, wall_pieces
+from mansion.scene.navigation import MARGIN as NAV_MARGIN
 from mansion.scene.parts import split_room
 from mansion.scene.passages import Feature, PassagePlan, plan_passages
 from mansion.scene.poses import AGENT_MODES, hub_spawn, landing_pose
@@ -249,22 +251,41 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
     floors_mat = {p.id: floor_material(card_text(p.id, "floor_material")).name for p in parts}
     walls_mat = {p.id: wall_material(card_text(p.id, "wall_material")).name for p in parts}
     facade = wall_material(building.palette.style + " facade render").name
-    builder = _WallBuilder(floor, height, walls_mat, facade, owner)
-    by_interface: dict[int, list[Feature]] = {}
-    for g in plan.features:
-        by_interface.setdefault(g.interface, []).append(g)
-    for i, f in enumerate(interfaces):
-        builder.interface(f, by_interface.get(i, []), i in plan.empty)
 
-    door_centres = [interfaces[g.interface].at((g.x0 + g.x1) / 2) for g in plan.features
-                    if g.kind == "door"]
-    front = next((g for g in plan.features if g.id == plan.entrance), None)
-    if front is not None:
+    def build_walls() -> _WallBuilder:
+        builder = _WallBuilder(floor, height, walls_mat, facade, owner)
+        by_interface: dict[int, list[Feature]] = {}
+        for g in plan.features:
+            by_interface.setdefault(g.interface, []).append(g)
+        for i, f in enumerate(interfaces):
+            builder.interface(f, by_interface.get(i, []), i in plan.empty)
+        return builder
+
+    def inside(front: Feature) -> AgentPose:
         # the ground floor's spawn: inside the front door, beyond its leaf, facing in
         f = interfaces[front.interface]
         inward = (-f.left_normal[0], -f.left_normal[1])
-        spawn = landing_pose(polygons[f.room], f.at((front.x0 + front.x1) / 2), inward,
-                             steps=(1.4, 1.2, 1.6, 1.0, 1.8, 0.8))
+        return landing_pose(polygons[f.room], f.at((front.x0 + front.x1) / 2), inward,
+                            steps=(1.4, 1.2, 1.6, 1.0, 1.8, 0.8))
+
+    builder = build_walls()
+    door_centres = [interfaces[g.interface].at((g.x0 + g.x1) / 2) for g in plan.features
+                    if g.kind == "door"]
+    if plan.entrance_options:
+        # the front door whose doorstep the agent walks on to most of the floor
+        space = open_space(polygons.values(), wall_pieces(builder.walls, builder.doors),
+                           AGENT_RADIUS + NAV_MARGIN)
+
+        def reach(k: int) -> tuple[int, int]:
+            p = inside(plan.entrance_options[k]).position
+            return (len(reached_rooms(space, polygons, (p.x, p.z))), -k)
+
+        front = plan.entrance_options[max(range(len(plan.entrance_options)), key=reach)]
+        plan.features = [g for g in plan.features
+                         if not (g.kind == "window" and g.interface == front.interface)] + [front]
+        plan.entrance = front.id
+        builder = build_walls()
+        spawn = inside(front)
     else:
         spawn = hub_spawn(layout, graph.hub.id, door_centres)
     at = Point(spawn.position.x, spawn.position.z)

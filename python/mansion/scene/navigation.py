@@ -32,7 +32,7 @@ from shapely.geometry.base import BaseGeometry
 from mansion.placement import check
 from mansion.scene.databases import asset_ids
 from mansion.scene.entrances import RoomEntrance, room_entrances
-from mansion.scene.house import AgentPose, House
+from mansion.scene.house import AgentPose, Door, House, Wall
 
 __all__ = [
     "AGENT_RADIUS",
@@ -42,6 +42,9 @@ __all__ = [
     "blocked_entrances",
     "floor_objects",
     "free_space",
+    "open_space",
+    "reached_rooms",
+    "wall_pieces",
     "solid_wall_pieces",
     "spawn_pose",
     "unreachable_rooms",
@@ -99,9 +102,14 @@ def _cut(span: tuple[float, float], holes: list[tuple[float, float]]) -> list[tu
 def solid_wall_pieces(house: House) -> list[LineString]:
     """Every piece of wall the agent cannot cross: each non-empty wall minus its door holes (a
     stretch whose two walls are both empty is an opening and has no piece)."""
+    return wall_pieces(house.walls, house.doors)
+
+
+def wall_pieces(all_walls: list[Wall], doors: list[Door]) -> list[LineString]:
+    """:func:`solid_wall_pieces` of these walls and doors (a house still being built)."""
     holes: dict[str, list[tuple[float, float]]] = {}
-    walls = {w.id: w for w in house.walls}
-    for door in house.doors:
+    walls = {w.id: w for w in all_walls}
+    for door in doors:
         if len(door.hole_polygon) < 2:
             continue
         lo, hi = door.hole_polygon[0].x, door.hole_polygon[-1].x
@@ -112,7 +120,7 @@ def solid_wall_pieces(house: House) -> list[LineString]:
             n = math.dist(a, b)
             holes.setdefault(door.wall1, []).append((n - hi, n - lo))
     out = []
-    for wall in house.walls:
+    for wall in all_walls:
         if wall.empty:
             continue
         a, b = wall.segment()
@@ -129,13 +137,33 @@ def solid_wall_pieces(house: House) -> list[LineString]:
 def free_space(house: House, clearance: float, obstacles: Iterable[Polygon] = ()) -> BaseGeometry:
     """Where the agent's centre may stand on the floor: at least ``clearance`` from the outside,
     every solid wall piece and every ``obstacles`` footprint."""
+    return open_space(_room_polygons(house).values(), solid_wall_pieces(house), clearance, obstacles)
+
+
+def open_space(
+    rooms: Iterable[Polygon], pieces: list[LineString], clearance: float,
+    obstacles: Iterable[Polygon] = (),
+) -> BaseGeometry:
+    """:func:`free_space` of these room polygons and solid wall pieces."""
     c = clearance - _TOL
-    floor = shapely.union_all(list(_room_polygons(house).values()))
-    blocked = [s.buffer(c) for s in solid_wall_pieces(house)] + [o.buffer(c) for o in obstacles]
+    floor = shapely.union_all(list(rooms))
+    blocked = [s.buffer(c) for s in pieces] + [o.buffer(c) for o in obstacles]
     space = floor.buffer(-c)
     if blocked:
         space = space.difference(shapely.union_all(blocked))
     return space
+
+
+def reached_rooms(space: BaseGeometry, rooms: dict[str, Polygon], start: Pt) -> set[str]:
+    """The rooms the piece of ``space`` nearest ``start`` (within 0.5 m) reaches."""
+    p = Point(start)
+    parts = _parts(space)
+    if not parts:
+        return set()
+    near = min(parts, key=lambda g: g.distance(p))
+    if near.distance(p) > 0.5:
+        return set()
+    return {rid for rid, poly in rooms.items() if near.intersection(poly).area > _AREA}
 
 
 def _parts(geom: BaseGeometry) -> list[Polygon]:

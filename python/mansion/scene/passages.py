@@ -10,8 +10,9 @@ is not (a graph edge whose rooms ended up without a shared wall) gets a door to 
 neighbour along their longest shared stretch.
 
 The front door: on the ground floor, a door to the outside through an exterior stretch of the hub
-(else of a lobby, foyer or entrance hall), where the room has an apron inside it; written as
-ProcTHOR writes it (``room0 == room1``, ``wall1`` the exterior twin).
+or a lobby, foyer or entrance hall, where the room has an apron inside it; of those places,
+instantiation keeps the one whose doorstep reaches most of the floor. Written as ProcTHOR writes
+it (``room0 == room1``, ``wall1`` the exterior twin).
 
 Windows: rooms whose type wants daylight get windows on their exterior stretches, one per ~3 m,
 sized from the window assets that fit the wall.
@@ -88,6 +89,8 @@ class Passage:
     door: str | None = None
 
 
+#: Front door places weighed per ground floor.
+ENTRANCE_OPTIONS = 8
 #: Room types a front door may open into when the hub has no exterior wall for one.
 ENTRY_TYPES = ("lobby", "entrance_hall", "entrance_vestibule", "foyer", "reception", "hall")
 
@@ -99,6 +102,9 @@ class PassagePlan:
     passages: list[Passage] = field(default_factory=list)
     #: The front door's feature id (ground floors), None when no exterior wall takes one.
     entrance: str | None = None
+    #: Where the front door may go, best first (instantiation keeps the one whose doorstep
+    #: reaches most of the floor, then drops the windows of its stretch).
+    entrance_options: list[Feature] = field(default_factory=list)
 
 
 def _pick(options: list[HoleAsset], *key: object) -> HoleAsset:
@@ -187,8 +193,9 @@ class _Planner:
         return None
 
     def front_door(self) -> None:
-        """A door to the outside from the hub (else a lobby, foyer or entrance hall) on the
-        ground floor, where the room has an apron inside: the building's way in."""
+        """Where a door to the outside may go on the ground floor: exterior stretches of the hub
+        or a lobby, foyer or entrance hall (else of a circulation room, else of any room but a
+        core) where the room has an apron inside, longest first; the building's way in."""
         if self.floor.index != 0:
             return
         hub = self.floor.graph.hub.id
@@ -197,11 +204,21 @@ class _Planner:
         if not options:
             return
         asset = _pick(options, self.seed, self.floor.index, "entrance")
+        circulation = {n.id for n in self.floor.graph.nodes
+                       if not n.is_core and room_kind(n.room_type).role == "circulation"}
+        # the hub or a lobby / foyer, else any circulation room, else any room but a core
+        tiers = [{hub} | entry, circulation, {n.id for n in self.floor.graph.nodes if not n.is_core}]
+        for tier in tiers:
+            self._entrance_options(tier, asset)
+            if self.plan.entrance_options:
+                return
+
+    def _entrance_options(self, rooms: set[str], asset: HoleAsset) -> None:
         ranked = sorted(
             (i for i, f in enumerate(self.interfaces)
-             if f.other is None and self.owner[f.room] in entry | {hub}
+             if f.other is None and self.owner[f.room] in rooms
              and f.length >= asset.width + 2 * MARGIN),
-            key=lambda i: (self.owner[self.interfaces[i].room] != hub, -self.interfaces[i].length, i),
+            key=lambda i: (-self.interfaces[i].length, i),
         )
         for i in ranked:
             f = self.interfaces[i]
@@ -210,12 +227,12 @@ class _Planner:
                 continue
             x0, x1 = mid - asset.width / 2, mid + asset.width / 2
             door_id = f"door|{self.floor.index}|entrance"
-            self.plan.features.append(
+            self.plan.entrance_options.append(
                 Feature(door_id, "door", i, x0 - MARGIN, x1 + MARGIN, x0, x1, 0.0, asset.height,
                         asset.asset_id, swing=self.owner[f.room])
             )
-            self.plan.entrance = door_id
-            return
+            if len(self.plan.entrance_options) >= ENTRANCE_OPTIONS:
+                return
 
     def swing_into(self, a: str, b: str) -> str:
         """Which of the two rooms a door's leaf swings into: a stair or lift core (the way out,
@@ -330,12 +347,9 @@ class _Planner:
         nodes = {n.id: n for n in self.floor.graph.nodes}
         tall = ceiling - SILL - HEAD_CLEARANCE
         usable = [w for w in window_assets() if "Bay" not in w.asset_id and w.height <= tall]
-        taken = {g.interface for g in self.plan.features if g.kind == "door"}
         for i, f in enumerate(self.interfaces):
             node = nodes.get(self.owner[f.room])
             if f.other is not None or node is None or not wants_windows(node.room_type, node.type):
-                continue
-            if i in taken:  # the front door's stretch
                 continue
             n = min(MAX_WINDOWS_PER_STRETCH, int(f.length // WINDOW_SPACING))
             if n == 0 and f.length >= 1.5:

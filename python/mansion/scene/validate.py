@@ -22,11 +22,9 @@ Errors (the loader throws, or the robot is stuck):
   doors and openings (:mod:`mansion.scene.navigation`);
 - ``room-doors``: a room's doors and openings fall apart inside it (a strip narrower than the
   agent is not part of the walkable room), or, in a house whose furnishing promised the agent's
-  room (``metadata.mansion.furnishing``: mansion's own), its furniture cuts them apart;
-- ``door-blocked``: in such a house, the floor objects shut the agent off from a door's or
-  opening's doorstep it reached in the empty house. (Furniture is judged by its assets' bounding
-  boxes, which over-approximate their colliders; in other houses, ProcTHOR's among them, these
-  two are the warnings ``furniture-cut`` and ``furniture-blocked``.)
+  room (``metadata.mansion.furnishing``: mansion's own), its furniture cuts them apart or shuts
+  one off (furniture is judged by its assets' bounding boxes, which over-approximate their
+  colliders: in other houses, ProcTHOR's among them, this is the warning ``furniture-cut``);
 - ``core-align`` (buildings): a core is not the same room at the same box on every floor it
   serves, lacks a door, or its landing stands in no room.
 
@@ -38,8 +36,9 @@ asset's box), ``hole-asset-type`` (a window asset in a door...), ``object-asset`
 asset the loader skips), ``duplicate-element`` (walls or objects sharing an id),
 ``object-in-room``, ``object-overlap``, ``object-child``, ``object-reach``, ``object-ceiling``
 (an object reaching above the ceiling), ``seat-physics`` (a tucked seat that is not kinematic and
-overlaps its table more than real houses do), ``furniture-cut`` and ``furniture-blocked`` (see
-above), ``spawn-missing`` (no agent pose: navigability not checked), ``lights`` (more
+overlaps its table more than real houses do), ``furniture-cut`` (see above),
+``furniture-blocked`` (the furniture shuts the agent off from a doorstep it reached in the empty
+house), ``spawn-missing`` (no agent pose: navigability not checked), ``lights`` (more
 shadow-casting lights than real houses use).
 
 ProcTHOR's conventions are accepted: no top-level ``id``; the outside door with ``room0 ==
@@ -90,7 +89,7 @@ __all__ = [
 #: other rule is a warning.
 ERRORS = frozenset({
     "schema", "duplicate-id", "one-hole-per-wall", "hole-wall", "hole-polygon", "hole-asset",
-    "material", "skybox", "object-rotation", "spawn", "navigable", "room-doors", "door-blocked",
+    "material", "skybox", "object-rotation", "spawn", "navigable", "room-doors",
     "core-align",
 })
 #: Real tucked seats (ProcTHOR's chairs at tables) overlap their table by at most this share of
@@ -646,7 +645,7 @@ class _HouseCheck:
                 self.add("room-doors" if promised else "furniture-cut", cut.room,
                          f"its furniture cuts its doors apart: {parts}{shut}")
         for rid, eid in navigation.blocked_entrances(self.house, radius=radius, margin=margin):
-            self.add("door-blocked" if promised else "furniture-blocked", rid,
+            self.add("furniture-blocked", rid,
                      f"the furniture shuts the agent off from the doorstep of {eid!r} in this room")
 
 
