@@ -24,7 +24,7 @@ reason, is recorded in ``metadata.mansion.furnishing``, and generation goes on.
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import shapely
@@ -45,6 +45,7 @@ from mansion.placement.place import (
 from mansion.scene.databases import asset_ids
 from mansion.scene.entrances import room_entrances
 from mansion.scene.house import Furnishing, House, HouseObject, RoomFurnishing
+from mansion.scene.navigation import MARGIN
 
 __all__ = ["APRON", "CLEAR", "FurnishJob", "furnish_houses"]
 
@@ -163,6 +164,9 @@ def furnish_houses(
     """Place objects in every furnishable room of every house, in place: ``house.objects`` and
     ``house.metadata.mansion.furnishing``."""
     opts = options or PlaceOptions()
+    # the engine keeps the agent's margin from furniture as from walls (mansion validate's
+    # navigability: passages of 2 · (radius + margin)); the record keeps the agent's radius
+    engine = replace(opts, agent_radius=opts.agent_radius + MARGIN)
     requests: list[tuple[RoomSpec, ObjectPlan]] = []
     owners: list[tuple[FurnishJob, str, int]] = []
     seeds: list[int] = []
@@ -210,7 +214,7 @@ def furnish_houses(
             seeds.append(seed)
             owners.append((job, room.id, len(records) - 1))
             ids.append([e.id for e in ways])
-    results = furnish_rooms(requests, options=opts, seeds=seeds) if requests else []
+    results = furnish_rooms(requests, options=engine, seeds=seeds) if requests else []
     # rooms whose entrances the empty room does not connect: once more from the largest group
     notes: dict[int, str] = {}
     retry = []
@@ -218,7 +222,7 @@ def furnish_houses(
     for i, result in enumerate(results):
         if isinstance(result, MansionError):
             subset = _connected_subset(
-                requests[i][0], opts.agent_radius, opts.cell, opts.reach_distance
+                requests[i][0], engine.agent_radius, opts.cell, opts.reach_distance
             )
             if subset is not None:
                 retry.append(i)
@@ -229,7 +233,7 @@ def furnish_houses(
                 notes[i] = (f"furnished from the entrances the empty room connects; "
                             f"{', '.join(left) or 'a pose'} cut off by a neck narrower than the agent")
     if retry:
-        again = furnish_rooms([requests[i] for i in retry], options=opts,
+        again = furnish_rooms([requests[i] for i in retry], options=engine,
                               seeds=[seeds[i] for i in retry])
         for i, result in zip(retry, again, strict=True):
             results[i] = result
