@@ -81,7 +81,12 @@ def main() -> int:
     ap.add_argument("--json", type=Path, help="Write the figures here too.")
     ap.add_argument("--examples", type=int, default=5, help="Examples printed per finding.")
     args = ap.parse_args()
-    tally: Counter[str] = Counter()
+    tally: Counter[str] = Counter({k: 0 for k in (
+        "floors", "rooms", "cores", "unreachable rooms (objects removed)",
+        "unreachable cores (objects removed)", "floors with an unreachable room",
+        "rooms with doors cut apart by their shape", "rooms with doors cut apart by furniture",
+        "doorsteps the furniture shuts off", "ground floors", "ground floors without an outside door",
+        "floors without a usable spawn")})
     examples: dict[str, list[str]] = {"unreachable": [], "no outside door": []}
     examples.setdefault("rooms with doors cut apart by furniture", [])
     examples.setdefault("rooms with doors cut apart by their shape", [])

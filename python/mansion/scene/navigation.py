@@ -279,17 +279,16 @@ def disconnected_entrances(
     c = radius + margin
     reach = c + _DOORSTEP
     polys = _room_polygons(house)
-    walls = [s.buffer(c - _TOL) for s in solid_wall_pieces(house)]
-    wall_union = shapely.union_all(walls) if walls else None
+    # where the agent's centre may stand in the room: the floor's free space (the doorways
+    # open, so an agent crossing a thin room from door to door facing it stays in it)
+    floor = free_space(house, c)
     ways_by_room = room_entrances(house)
     out = []
     for rid, poly in polys.items():
         ways = ways_by_room.get(rid, [])
         if not ways:
             continue
-        bare = poly.buffer(-(c - _TOL))
-        if wall_union is not None:
-            bare = bare.difference(wall_union)
+        bare = floor.intersection(poly)
         groups, blocked = _groups(bare, ways, reach)
         furniture = False
         if objects and not blocked and len(groups) <= 1:
