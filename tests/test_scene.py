@@ -311,6 +311,7 @@ def test_null_floor_material_and_the_outside_door_convention() -> None:
     assert {p.rule for p in validate_house(h)} <= {"asset-position"}
 
 
+@pytest.mark.slow
 def test_real_houses_give_no_error() -> None:
     """Every real house AI2-THOR loads (ProcTHOR's and Holodeck's, ../shared/data/real-houses)
     passes without an error: no top-level id, ProcTHOR's conventions, furniture in their way."""

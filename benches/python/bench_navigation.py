@@ -4,7 +4,8 @@ For each floor (a house JSON) of each building folder given (or generated: ``--g
 --seed S`` builds the offline hundred's cases), with an agent of ``--radius`` keeping
 ``--margin`` (clear passages >= 2 · (radius + margin)):
 
-- rooms and cores the agent cannot reach from the spawn with every object removed;
+- rooms and cores the agent cannot reach from the spawn with every object removed (and how many
+  of them an agent passing 0.5 m necks, one solver cell, would reach);
 - rooms whose doors and openings fall apart inside them: by their shape alone (a strip narrower
   than the agent), and with their furniture placed;
 - doorsteps the furniture shuts off from the spawn;
@@ -57,6 +58,10 @@ def measure(folder: Path, radius: float, margin: float, tally: Counter[str], exa
         tally["unreachable cores (objects removed)"] += len(set(lost) & cores)
         if lost:
             tally["floors with an unreachable room"] += 1
+            # behind necks of 0.5 m (one solver cell): reached once 0.5 m passages let it through
+            wider = nav.unreachable_rooms(house, radius=0.25, margin=0.0)
+            if wider is not None:
+                tally["  of them reached through 0.5 m passages"] += len(set(lost) - set(wider))
             examples["unreachable"].append(f"{where} {', '.join(lost[:4])}")
         for cut in nav.disconnected_entrances(house, radius=radius, margin=margin):
             key = "rooms with doors cut apart by furniture" if cut.furniture else "rooms with doors cut apart by their shape"
@@ -83,7 +88,8 @@ def main() -> int:
     args = ap.parse_args()
     tally: Counter[str] = Counter({k: 0 for k in (
         "floors", "rooms", "cores", "unreachable rooms (objects removed)",
-        "unreachable cores (objects removed)", "floors with an unreachable room",
+        "unreachable cores (objects removed)", "  of them reached through 0.5 m passages",
+        "floors with an unreachable room",
         "rooms with doors cut apart by their shape", "rooms with doors cut apart by furniture",
         "doorsteps the furniture shuts off", "ground floors", "ground floors without an outside door",
         "floors without a usable spawn")})

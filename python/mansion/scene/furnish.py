@@ -205,7 +205,7 @@ def furnish_houses(
                 ],
                 keep_clear=[p for p in poses if poly.contains(Point(p))], clear_size=CLEAR,
             )
-            seed = _room_seed(job.seed, house.id, room.id)
+            seed = _room_seed(job.seed, house.id or "", room.id)
             plan = plan_objects(room.id, rtype, ring, building_type, seed=seed)
             if not plan.items:
                 rooms[room.id] = RoomFurnishing(status="empty", reason=f"no object plan for {rtype!r}")

@@ -241,12 +241,14 @@ class _HouseCheck:
         def all_objects(items: list[HouseObject]) -> list[HouseObject]:
             return [x for o in items for x in (o, *all_objects(o.children))]
 
-        for kind, many in (("wall", h.walls), ("object", all_objects(h.objects))):
+        named: list[tuple[str, list[str]]] = [
+            ("wall", [w.id for w in h.walls]), ("object", [o.id for o in all_objects(h.objects)])]
+        for kind, ids in named:
             seen = set()
-            for item in many:
-                if item.id in seen:
-                    self.add("duplicate-element", item.id, f"{kind} id used twice")
-                seen.add(item.id)
+            for eid in ids:
+                if eid in seen:
+                    self.add("duplicate-element", eid, f"{kind} id used twice")
+                seen.add(eid)
 
     def rooms(self) -> dict[str, Polygon]:
         polys: dict[str, Polygon] = {}
