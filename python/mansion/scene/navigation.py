@@ -268,6 +268,16 @@ def _groups(space: BaseGeometry, ways: list[RoomEntrance], reach: float) -> tupl
     return list(by_root.values()), blocked
 
 
+def _passable(ways: list[RoomEntrance], clearance: float) -> list[RoomEntrance]:
+    """The ways an agent can go through: at least 2 · clearance wide, or part of a longer gap (an
+    opening split into wall pieces at a neighbour's corner)."""
+    def ends(e: RoomEntrance) -> set[tuple[float, float]]:
+        return {(round(e.a[0], 4), round(e.a[1], 4)), (round(e.b[0], 4), round(e.b[1], 4))}
+
+    return [e for e in ways if e.width >= 2 * clearance - _TOL
+            or any(o is not e and ends(o) & ends(e) for o in ways)]
+
+
 def disconnected_entrances(
     house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
     objects: bool = True,
@@ -285,7 +295,7 @@ def disconnected_entrances(
     ways_by_room = room_entrances(house)
     out = []
     for rid, poly in polys.items():
-        ways = ways_by_room.get(rid, [])
+        ways = _passable(ways_by_room.get(rid, []), c)
         if not ways:
             continue
         bare = floor.intersection(poly)
