@@ -1,7 +1,7 @@
 """Scenes for the offline planner's hundred (issues 5 and 6): every building of benchmark seeds
 0–99 (the same cases as ``bench_generate.py``) is generated, its scenes written with objects,
 and the whole building validated (every floor's house JSON, objects included, and the cores
-across floors). Prints every problem and exits non-zero if any building fails.
+across floors). Prints every problem and exits non-zero if any building has an error.
 
 Then the objects over every room: #OB (footprints leaving their room by more than 1 cm), #CN
 (overlapping floor objects, tucked seats excepted), #Rch (objects reached by the validator's
