@@ -55,7 +55,7 @@ from __future__ import annotations
 import json
 import math
 import os
-from collections import defaultdict, deque
+from collections import defaultdict
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
