@@ -218,22 +218,38 @@ def _furnishing_summary(manifest_path: Path) -> str:
 
 @app.command()
 def validate(
-    path: Annotated[Path, typer.Argument(help="A house JSON, a manifest.json, or a folder holding one (or scenes/manifest.json).")],
+    paths: Annotated[list[Path], typer.Argument(help="House JSONs, manifest.json files, or building folders (with manifest.json, scenes/manifest.json or house JSONs).")],
+    strict: Annotated[bool, typer.Option("--strict", help="Fail on warnings too.")] = False,
+    json_out: Annotated[Optional[Path], typer.Option("--json", help="Write every problem (severity, rule, element, message, source) here as JSON.")] = None,
 ) -> None:
-    """Check house JSONs (schema and geometry) or a whole building; exit 1 on any problem."""
-    from mansion.scene import validate_path
+    """Check house JSONs or whole buildings as AI2-THOR's loader would: errors (the loader fails,
+    or the robot cannot move) exit 1; warnings are quality findings (--strict fails on them)."""
+    import json
 
-    try:
-        problems = validate_path(path)
-    except MansionError as exc:
-        raise _fail(str(exc)) from None
+    from mansion._io import atomic_write_text
+    from mansion.scene.validate import errors, validate_path
+
     console = Console()
-    for problem in problems:
-        console.print(escape(str(problem)), soft_wrap=True)
+    problems = []
+    for path in paths:
+        try:
+            found = validate_path(path)
+        except MansionError as exc:
+            raise _fail(str(exc)) from None
+        problems += found
+        for problem in found:
+            style = "red" if problem.severity == "error" else "yellow"
+            console.print(f"[{style}]{escape(str(problem))}[/{style}]", soft_wrap=True)
+        if not found:
+            console.print(f"{escape(str(path))}: valid")
+    if json_out is not None:
+        atomic_write_text(json_out, json.dumps([p.to_dict() for p in problems], indent=1) + "\n")
+    n_err = len(errors(problems))
+    n_warn = len(problems) - n_err
     if problems:
-        console.print(f"[red]{len(problems)} problem(s)[/red]")
+        console.print(f"{n_err} error(s), {n_warn} warning(s)")
+    if n_err or (strict and n_warn):
         raise typer.Exit(code=1)
-    console.print(f"{escape(str(path))}: valid")
 
 
 @app.command()

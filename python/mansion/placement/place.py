@@ -239,6 +239,9 @@ def thor_objects(placement: RoomPlacement, db: AssetDatabase | None = None) -> l
         }
         if o.tucked_under is not None:
             entry["tuckedUnder"] = f"{rid}|{o.tucked_under}"
+            # pushed under its table it overlaps it (more than real houses' 38 %): a dynamic
+            # body would be shoved out by the physics, so it stays put like ProcTHOR's seats
+            entry["kinematic"] = True
         if children:
             entry["children"] = children
         out.append(entry)

@@ -22,6 +22,7 @@ __all__ = [
     "asset_database",
     "asset_ids",
     "door_assets",
+    "hole_asset_position",
     "material_database",
     "material_names",
     "skyboxes",
@@ -115,3 +116,15 @@ def door_assets() -> tuple[HoleAsset, ...]:
 def window_assets() -> tuple[HoleAsset, ...]:
     """Window assets, sorted by id."""
     return _hole_assets("Window_")
+
+
+def hole_asset_position(asset_id: str, lo: tuple[float, float]) -> tuple[float, float] | None:
+    """ProcTHOR's ``assetPosition`` (x, y) of a door or window asset whose hole starts at ``lo``
+    (wall0's frame): the hole's minimum + the asset's offset in the wall-holes database + half
+    its bounding box. None for an asset either database lacks."""
+    hole = wall_holes().get(asset_id.replace("Doorframe", "Doorway"))
+    rec = asset_ids().get(asset_id)
+    if hole is None or rec is None:
+        return None
+    bb, off = rec["boundingBox"], hole["offset"]
+    return (lo[0] + off["x"] + bb["x"] / 2, lo[1] + off["y"] + bb["y"] / 2)

@@ -24,7 +24,7 @@ reason, is recorded in ``metadata.mansion.furnishing``, and generation goes on.
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import shapely
@@ -42,8 +42,10 @@ from mansion.placement.place import (
     furnish_rooms,
     thor_objects,
 )
+from mansion.scene.databases import asset_ids
 from mansion.scene.entrances import room_entrances
 from mansion.scene.house import Furnishing, House, HouseObject, RoomFurnishing
+from mansion.scene.navigation import MARGIN
 
 __all__ = ["APRON", "CLEAR", "FurnishJob", "furnish_houses"]
 
@@ -62,6 +64,26 @@ class FurnishJob:
     house: House
     room_types: dict[str, str]
     seed: int
+
+
+def _under_ceiling(house: House, objects: list[HouseObject]) -> list[HouseObject]:
+    """The objects without anything reaching above the ceiling (a statue on a tall shelf):
+    such a small object is left out, a floor object too tall for the room too."""
+    record = house.metadata.mansion
+    if record is None:
+        return objects
+    db = asset_ids()
+
+    def top(o: HouseObject) -> float:
+        return o.position.y + db[o.asset_id]["boundingBox"]["y"] / 2 if o.asset_id in db else 0.0
+
+    out = []
+    for o in objects:
+        if top(o) > record.ceiling_height:
+            continue
+        o.children = [c for c in o.children if top(c) <= record.ceiling_height]
+        out.append(o)
+    return out
 
 
 def _room_seed(seed: int, house_id: str, room_id: str) -> int:
@@ -142,6 +164,9 @@ def furnish_houses(
     """Place objects in every furnishable room of every house, in place: ``house.objects`` and
     ``house.metadata.mansion.furnishing``."""
     opts = options or PlaceOptions()
+    # the engine keeps the agent's margin from furniture as from walls (mansion validate's
+    # navigability: passages of 2 · (radius + margin)); the record keeps the agent's radius
+    engine = replace(opts, agent_radius=opts.agent_radius + MARGIN)
     requests: list[tuple[RoomSpec, ObjectPlan]] = []
     owners: list[tuple[FurnishJob, str, int]] = []
     seeds: list[int] = []
@@ -180,7 +205,7 @@ def furnish_houses(
                 ],
                 keep_clear=[p for p in poses if poly.contains(Point(p))], clear_size=CLEAR,
             )
-            seed = _room_seed(job.seed, house.id, room.id)
+            seed = _room_seed(job.seed, house.id or "", room.id)
             plan = plan_objects(room.id, rtype, ring, building_type, seed=seed)
             if not plan.items:
                 rooms[room.id] = RoomFurnishing(status="empty", reason=f"no object plan for {rtype!r}")
@@ -189,7 +214,7 @@ def furnish_houses(
             seeds.append(seed)
             owners.append((job, room.id, len(records) - 1))
             ids.append([e.id for e in ways])
-    results = furnish_rooms(requests, options=opts, seeds=seeds) if requests else []
+    results = furnish_rooms(requests, options=engine, seeds=seeds) if requests else []
     # rooms whose entrances the empty room does not connect: once more from the largest group
     notes: dict[int, str] = {}
     retry = []
@@ -197,7 +222,7 @@ def furnish_houses(
     for i, result in enumerate(results):
         if isinstance(result, MansionError):
             subset = _connected_subset(
-                requests[i][0], opts.agent_radius, opts.cell, opts.reach_distance
+                requests[i][0], engine.agent_radius, opts.cell, opts.reach_distance
             )
             if subset is not None:
                 retry.append(i)
@@ -208,7 +233,7 @@ def furnish_houses(
                 notes[i] = (f"furnished from the entrances the empty room connects; "
                             f"{', '.join(left) or 'a pose'} cut off by a neck narrower than the agent")
     if retry:
-        again = furnish_rooms([requests[i] for i in retry], options=opts,
+        again = furnish_rooms([requests[i] for i in retry], options=engine,
                               seeds=[seeds[i] for i in retry])
         for i, result in zip(retry, again, strict=True):
             results[i] = result
@@ -217,12 +242,13 @@ def furnish_houses(
         if isinstance(result, MansionError):
             records[k][room_id] = RoomFurnishing(status="failed", reason=str(result))
             continue
-        objects = [HouseObject.model_validate(o) for o in thor_objects(result)]
+        objects = _under_ceiling(job.house, [HouseObject.model_validate(o) for o in thor_objects(result)])
         placed.setdefault(k, []).extend(objects)
         dropped = sum(d.count for d in result.dropped)
         if objects:
             records[k][room_id] = RoomFurnishing(
-                status="furnished", objects=len(objects), small_objects=result.small_count,
+                status="furnished", objects=len(objects),
+                small_objects=sum(len(o.children) for o in objects),
                 dropped=dropped, reason=notes.get(i),
             )
         else:

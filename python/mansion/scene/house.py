@@ -321,9 +321,11 @@ class HouseMetadata(_Thor):
 
 
 class House(_Thor):
-    """``ProceduralHouse``: one floor of a building, loadable with ``controller.reset(scene=house)``."""
+    """``ProceduralHouse``: one floor of a building, loadable with ``controller.reset(scene=house)``.
 
-    id: str
+    ``id`` is optional, as for the loader (it names the root object ``Floor`` without one)."""
+
+    id: str | None = None
     procedural_parameters: ProceduralParameters
     rooms: list[Room] = Field(default_factory=list)
     walls: list[Wall] = Field(default_factory=list)

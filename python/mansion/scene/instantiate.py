@@ -20,7 +20,7 @@ from shapely.geometry import Point, Polygon
 from mansion.exceptions import InvalidBuildingError, MansionError
 from mansion.models.building import Building, Floor
 from mansion.placement.place import PlaceOptions
-from mansion.scene.databases import skyboxes
+from mansion.scene.databases import hole_asset_position, skyboxes
 from mansion.scene.furnish import FurnishJob, furnish_houses
 from mansion.scene.house import (
     HOUSE_SCHEMA,
@@ -44,6 +44,8 @@ from mansion.scene.house import (
 from mansion.scene.interfaces import Interface, Pt, RoomRings, find_interfaces, oriented
 from mansion.scene.manifest import BuildingManifest, CoreLanding, ManifestCore, ManifestFloor
 from mansion.scene.materials import floor_material, wall_material
+from mansion.scene.navigation import AGENT_RADIUS, open_space, reached_rooms, wall_pieces
+from mansion.scene.navigation import MARGIN as NAV_MARGIN
 from mansion.scene.parts import split_room
 from mansion.scene.passages import Feature, PassagePlan, plan_passages
 from mansion.scene.poses import AGENT_MODES, hub_spawn, landing_pose
@@ -60,6 +62,10 @@ __all__ = [
 
 #: Slab thickness between floors (m): floor-to-floor height = ceiling height + slab.
 SLAB = 0.3
+#: ProcTHOR's light layers (``Procedural0``..``Procedural3``).
+LAYERS = 4
+#: Point lights of a floor that cast shadows (the largest rooms'); with the sun, 3 a floor.
+SHADOW_LIGHTS = 2
 #: Ceiling height by palette family (m): homes lower, offices and public buildings higher.
 _CEILINGS = {"residential": 2.7, "work": 3.0, "public": 3.3}
 
@@ -158,15 +164,19 @@ class _WallBuilder:
     def _hole(self, g: Feature, f: Interface, t0: float, wall0: str, wall1: str) -> None:
         lo = Vec3(x=g.x0 - t0, y=g.y0, z=0.0)
         hi = Vec3(x=g.x1 - t0, y=g.y1, z=0.0)
-        centre = Vec3(x=(lo.x + hi.x) / 2, y=(lo.y + hi.y) / 2, z=0.0)
+        # ProcTHOR's assetPosition: the hole's minimum + the wall-holes offset + half the box
+        x, y = hole_asset_position(g.asset_id, (lo.x, lo.y)) or ((lo.x + hi.x) / 2, (lo.y + hi.y) / 2)
+        at = Vec3(x=x, y=y, z=0.0)
         if g.kind == "door":
-            assert f.other is not None
-            # the feature names the layout room; the door names the part of it on its side
-            swing = f.room if self.owner[f.room] == g.swing else f.other
+            # the feature names the layout room; the door names the part of it on its side. The
+            # front door (no room beyond) is ProcTHOR's outside door: room0 == room1, wall1 the
+            # exterior twin.
+            other = f.other if f.other is not None else f.room
+            swing = f.room if self.owner[f.room] == g.swing else other
             self.doors.append(
                 Door(
-                    id=g.id, asset_id=g.asset_id, room0=f.room, room1=f.other, wall0=wall0,
-                    wall1=wall1, hole_polygon=[lo, hi], asset_position=centre, openable=True,
+                    id=g.id, asset_id=g.asset_id, room0=f.room, room1=other, wall0=wall0,
+                    wall1=wall1, hole_polygon=[lo, hi], asset_position=at, openable=True,
                     openness=1.0, swing_room=swing,
                 )
             )
@@ -174,18 +184,41 @@ class _WallBuilder:
             self.windows.append(
                 Window(
                     id=g.id, asset_id=g.asset_id, room0=f.room, room1=f.room, wall0=wall0,
-                    wall1=wall1, hole_polygon=[lo, hi], asset_position=centre,
+                    wall1=wall1, hole_polygon=[lo, hi], asset_position=at,
                 )
             )
 
 
-def _lights(rooms: dict[str, Polygon], height: float) -> list[Light]:
+def room_layers(rooms: dict[str, Polygon]) -> dict[str, int]:
+    """ProcTHOR's light layers: rooms that share a wall get different layers of the four
+    ``Procedural0..3`` (a greedy colouring, most neighbours first; a room whose neighbours
+    hold all four takes the least used among them), so a room's light, culling the other
+    layers, does not shine through into its neighbours."""
+    ids = list(rooms)
+    near: dict[str, set[str]] = {r: set() for r in ids}
+    for i, a in enumerate(ids):
+        for b in ids[i + 1:]:
+            if rooms[a].boundary.intersection(rooms[b].boundary).length > 1e-6:
+                near[a].add(b)
+                near[b].add(a)
+    layer: dict[str, int] = {}
+    for rid in sorted(ids, key=lambda r: (-len(near[r]), r)):
+        used = [layer[n] for n in near[rid] if n in layer]
+        free = [k for k in range(LAYERS) if k not in used]
+        layer[rid] = free[0] if free else min(range(LAYERS), key=lambda k: (used.count(k), k))
+    return layer
+
+
+def _lights(rooms: dict[str, Polygon], height: float, layers: dict[str, int]) -> list[Light]:
     sun = Light(
         id="DirectionalLight", type="directional", position=Vec3(x=0.84, y=0.1855, z=-1.09),
         rotation=Vec3(x=43.375, y=-3.902, z=-63.618), intensity=0.35, indirect_multiplier=1.0,
         rgb=Color(r=1.0, g=1.0, b=1.0), shadow=ShadowParameters(bias=0.0),
     )
     out = [sun]
+    # Soft shadows only for the largest rooms' lights: real houses cast shadows from a median
+    # of 2 (at most 10) lights a floor, and every shadow map costs a render pass.
+    shadowed = set(sorted(rooms, key=lambda r: (-rooms[r].area, r))[:SHADOW_LIGHTS])
     for rid, poly in rooms.items():
         # An L-shaped room's centroid can fall outside it: the representative point never does.
         c = poly.centroid if poly.contains(poly.centroid) else poly.representative_point()
@@ -193,7 +226,10 @@ def _lights(rooms: dict[str, Polygon], height: float) -> list[Light]:
             Light(
                 id=f"light|{rid}", type="point", position=Vec3(x=c.x, y=height - 0.2, z=c.y),
                 intensity=0.75, range=max(10.0, math.sqrt(poly.area) * 1.5),
-                rgb=Color(r=1.0, g=0.855, b=0.722), shadow=ShadowParameters(), room_id=rid,
+                rgb=Color(r=1.0, g=0.855, b=0.722),
+                shadow=ShadowParameters() if rid in shadowed else None, room_id=rid,
+                layer=f"Procedural{layers[rid]}",
+                culling_mask_off=[f"Procedural{k}" for k in range(LAYERS) if k != layers[rid]],
             )
         )
     return out
@@ -215,16 +251,43 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
     floors_mat = {p.id: floor_material(card_text(p.id, "floor_material")).name for p in parts}
     walls_mat = {p.id: wall_material(card_text(p.id, "wall_material")).name for p in parts}
     facade = wall_material(building.palette.style + " facade render").name
-    builder = _WallBuilder(floor, height, walls_mat, facade, owner)
-    by_interface: dict[int, list[Feature]] = {}
-    for g in plan.features:
-        by_interface.setdefault(g.interface, []).append(g)
-    for i, f in enumerate(interfaces):
-        builder.interface(f, by_interface.get(i, []), i in plan.empty)
 
+    def build_walls() -> _WallBuilder:
+        builder = _WallBuilder(floor, height, walls_mat, facade, owner)
+        by_interface: dict[int, list[Feature]] = {}
+        for g in plan.features:
+            by_interface.setdefault(g.interface, []).append(g)
+        for i, f in enumerate(interfaces):
+            builder.interface(f, by_interface.get(i, []), i in plan.empty)
+        return builder
+
+    def inside(front: Feature) -> AgentPose:
+        # the ground floor's spawn: inside the front door, beyond its leaf, facing in
+        f = interfaces[front.interface]
+        inward = (-f.left_normal[0], -f.left_normal[1])
+        return landing_pose(polygons[f.room], f.at((front.x0 + front.x1) / 2), inward,
+                            steps=(1.4, 1.2, 1.6, 1.0, 1.8, 0.8))
+
+    builder = build_walls()
     door_centres = [interfaces[g.interface].at((g.x0 + g.x1) / 2) for g in plan.features
                     if g.kind == "door"]
-    spawn = hub_spawn(layout, graph.hub.id, door_centres)
+    if plan.entrance_options:
+        # the front door whose doorstep the agent walks on to most of the floor
+        space = open_space(polygons.values(), wall_pieces(builder.walls, builder.doors),
+                           AGENT_RADIUS + NAV_MARGIN)
+
+        def reach(k: int) -> tuple[int, int]:
+            p = inside(plan.entrance_options[k]).position
+            return (len(reached_rooms(space, polygons, (p.x, p.z))), -k)
+
+        front = plan.entrance_options[max(range(len(plan.entrance_options)), key=reach)]
+        plan.features = [g for g in plan.features
+                         if not (g.kind == "window" and g.interface == front.interface)] + [front]
+        plan.entrance = front.id
+        builder = build_walls()
+        spawn = inside(front)
+    else:
+        spawn = hub_spawn(layout, graph.hub.id, door_centres)
     at = Point(spawn.position.x, spawn.position.z)
     hub = next(
         (pid for pid, poly in polygons.items() if owner[pid] == graph.hub.id and poly.contains(at)),
@@ -252,10 +315,15 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
             )
         )
     sky = skyboxes()[building.seed % len(skyboxes())]
+    layers = room_layers(polygons)
+    for room in rooms:
+        room.layer = f"Procedural{layers[room.id]}"
+    for wall in builder.walls:
+        wall.layer = f"Procedural{layers[wall.room_id]}"
     house = House(
         id=f"{building_id(building)}-floor-{floor.index}",
         procedural_parameters=ProceduralParameters(
-            skybox_id=sky, lights=_lights(polygons, height),
+            skybox_id=sky, lights=_lights(polygons, height, layers),
             ceiling_material=MaterialProperties(name=wall_material("white painted plaster").name),
         ),
         rooms=rooms, walls=builder.walls, doors=builder.doors, windows=builder.windows,
@@ -331,6 +399,13 @@ def _furnish(
         for kinds in [{r.id: r.room_type for r in p.floor.layout.rooms}]
     ]
     furnish_houses(jobs, building.program.building_type, options)
+    for p in parts:
+        # objects light like their room (ProcTHOR's layers)
+        layers = {r.id: r.layer for r in p.house.rooms}
+        for obj in p.house.objects:
+            obj.layer = layers.get(obj.room or "")
+            for child in obj.children:
+                child.layer = obj.layer
 
 
 def floor_house(
@@ -357,6 +432,7 @@ def build_scenes(
             index=f.index, house=floor_file(f.index), elevation=f.index * (height + SLAB),
             height=height + SLAB, ceiling_height=height, hub=f.graph.hub.id,
             spawn=p.house.metadata.agent_poses["default"], copy_of=f.copy_of,
+            entrance=p.plan.entrance,
         )
         for f, p in zip(building.floors, parts, strict=True)
     ]

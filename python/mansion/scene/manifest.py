@@ -34,6 +34,9 @@ class ManifestFloor(BaseModel):
     hub: str
     spawn: AgentPose
     copy_of: int | None = None
+    entrance: str | None = Field(
+        default=None, description="The ground floor's front door (id of its door to the outside)."
+    )
 
 
 class CoreLanding(BaseModel):

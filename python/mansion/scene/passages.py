@@ -9,6 +9,11 @@ the layout promised still exists. Finally every room must be reachable from the 
 is not (a graph edge whose rooms ended up without a shared wall) gets a door to a reachable
 neighbour along their longest shared stretch.
 
+The front door: on the ground floor, a door to the outside through an exterior stretch of the hub
+or a lobby, foyer or entrance hall, where the room has an apron inside it; of those places,
+instantiation keeps the one whose doorstep reaches most of the floor. Written as ProcTHOR writes
+it (``room0 == room1``, ``wall1`` the exterior twin).
+
 Windows: rooms whose type wants daylight get windows on their exterior stretches, one per ~3 m,
 sized from the window assets that fit the wall.
 
@@ -84,11 +89,22 @@ class Passage:
     door: str | None = None
 
 
+#: Front door places weighed per ground floor.
+ENTRANCE_OPTIONS = 8
+#: Room types a front door may open into when the hub has no exterior wall for one.
+ENTRY_TYPES = ("lobby", "entrance_hall", "entrance_vestibule", "foyer", "reception", "hall")
+
+
 @dataclass
 class PassagePlan:
     features: list[Feature] = field(default_factory=list)
     empty: set[int] = field(default_factory=set)
     passages: list[Passage] = field(default_factory=list)
+    #: The front door's feature id (ground floors), None when no exterior wall takes one.
+    entrance: str | None = None
+    #: Where the front door may go, best first (instantiation keeps the one whose doorstep
+    #: reaches most of the floor, then drops the windows of its stretch).
+    entrance_options: list[Feature] = field(default_factory=list)
 
 
 def _pick(options: list[HoleAsset], *key: object) -> HoleAsset:
@@ -154,17 +170,19 @@ class _Planner:
             if f.other is not None and {self.owner[f.room], self.owner[f.other]} == {a, b}
         ]
 
-    def _door_centre(self, f: Interface, width: float, margin: float) -> float:
-        """Where along ``f`` the door goes: nearest the middle with an apron on both sides."""
+    def _apron_centre(self, f: Interface, width: float, margin: float, outside: bool = False) -> float | None:
+        """Where along ``f`` a door ``width`` wide goes: nearest the middle with an apron on both
+        sides (``outside``: on the room's side only); None when no place has them."""
         lo, hi = width / 2 + margin, f.length - width / 2 - margin
         nx, ny = f.left_normal
         steps = max(0, int((hi - lo) / 0.05))
         candidates = sorted((lo + (hi - lo) * k / steps if steps else (lo + hi) / 2
                              for k in range(steps + 1)), key=lambda t: abs(t - f.length / 2))
+        sides = ((f.room, -1.0),) if outside else ((f.room, -1.0), (f.other, 1.0))
         for t in candidates:
             a, b = f.at(t - width / 2), f.at(t + width / 2)
             ok = True
-            for room, sign in ((f.room, -1.0), (f.other, 1.0)):
+            for room, sign in sides:
                 d = sign * DOOR_APRON
                 apron = Polygon([a, b, (b[0] + nx * d, b[1] + ny * d), (a[0] + nx * d, a[1] + ny * d)])
                 if room is None or not self.parts[room].buffer(1e-6).covers(apron):
@@ -172,7 +190,49 @@ class _Planner:
                     break
             if ok:
                 return t
-        return f.length / 2
+        return None
+
+    def front_door(self) -> None:
+        """Where a door to the outside may go on the ground floor: exterior stretches of the hub
+        or a lobby, foyer or entrance hall (else of a circulation room, else of any room but a
+        core) where the room has an apron inside, longest first; the building's way in."""
+        if self.floor.index != 0:
+            return
+        hub = self.floor.graph.hub.id
+        entry = {n.id for n in self.floor.graph.nodes if n.room_type in ENTRY_TYPES}
+        options = [d for d in door_assets() if "Double" not in d.asset_id and d.height < self.ceiling]
+        if not options:
+            return
+        asset = _pick(options, self.seed, self.floor.index, "entrance")
+        circulation = {n.id for n in self.floor.graph.nodes
+                       if not n.is_core and room_kind(n.room_type).role == "circulation"}
+        # the hub or a lobby / foyer, else any circulation room, else any room but a core
+        tiers = [{hub} | entry, circulation, {n.id for n in self.floor.graph.nodes if not n.is_core}]
+        for tier in tiers:
+            self._entrance_options(tier, asset)
+            if self.plan.entrance_options:
+                return
+
+    def _entrance_options(self, rooms: set[str], asset: HoleAsset) -> None:
+        ranked = sorted(
+            (i for i, f in enumerate(self.interfaces)
+             if f.other is None and self.owner[f.room] in rooms
+             and f.length >= asset.width + 2 * MARGIN),
+            key=lambda i: (-self.interfaces[i].length, i),
+        )
+        for i in ranked:
+            f = self.interfaces[i]
+            mid = self._apron_centre(f, asset.width, MARGIN, outside=True)
+            if mid is None:
+                continue
+            x0, x1 = mid - asset.width / 2, mid + asset.width / 2
+            door_id = f"door|{self.floor.index}|entrance"
+            self.plan.entrance_options.append(
+                Feature(door_id, "door", i, x0 - MARGIN, x1 + MARGIN, x0, x1, 0.0, asset.height,
+                        asset.asset_id, swing=self.owner[f.room])
+            )
+            if len(self.plan.entrance_options) >= ENTRANCE_OPTIONS:
+                return
 
     def swing_into(self, a: str, b: str) -> str:
         """Which of the two rooms a door's leaf swings into: a stair or lift core (the way out,
@@ -186,24 +246,44 @@ class _Planner:
             return a if da > db else b
         return min((a, b), key=lambda r: (self.areas.get(r, 0.0), r))
 
-    def door(self, a: str, b: str, reason: str) -> None:
-        runs = self.shared(a, b)
-        i = max(runs, key=lambda k: (self.interfaces[k].length, -k))
-        f = self.interfaces[i]
+    def _door_asset(self, f: Interface, a: str, b: str) -> HoleAsset | None:
         fits = [d for d in door_assets() if d.width <= f.length and d.height < self.ceiling]
         if not fits:
-            # The layout promised a passage here but no door asset fits: leave the wall out.
-            self.plan.empty.add(i)
-            self.plan.passages.append(Passage("opening", a, b, f"{reason}; too short for a door"))
-            return
+            return None
         singles = [d for d in fits if "Double" not in d.asset_id]
         doubles = [d for d in fits if "Double" in d.asset_id]
         big = min(self.areas.get(a, 0.0), self.areas.get(b, 0.0)) >= DOUBLE_DOOR_AREA
         lift = any(self.floor.graph.node(r).type == "elevator" for r in (a, b))
         wide = doubles and f.length >= DOUBLE_DOOR_RUN and (big or lift)
-        asset = _pick(doubles if wide else singles or fits, self.seed, self.floor.index, a, b)
-        margin = min(MARGIN, (f.length - asset.width) / 2)
-        mid = self._door_centre(f, asset.width, margin)
+        return _pick(doubles if wide else singles or fits, self.seed, self.floor.index, a, b)
+
+    def door(self, a: str, b: str, reason: str) -> None:
+        """A door between ``a`` and ``b`` where both sides are walkable: on the longest stretch
+        they share that has an apron on both sides of the door, else the longest stretch."""
+        runs = sorted(self.shared(a, b), key=lambda k: (-self.interfaces[k].length, k))
+        choice = None
+        for k in runs:
+            f = self.interfaces[k]
+            asset = self._door_asset(f, a, b)
+            if asset is None:
+                continue
+            margin = min(MARGIN, (f.length - asset.width) / 2)
+            t = self._apron_centre(f, asset.width, margin)
+            if t is not None:
+                choice = (k, asset, margin, t)
+                break
+        if choice is None:
+            i = runs[0]
+            f = self.interfaces[i]
+            asset = self._door_asset(f, a, b)
+            if asset is None:
+                # The layout promised a passage here but no door asset fits: leave the wall out.
+                self.plan.empty.add(i)
+                self.plan.passages.append(Passage("opening", a, b, f"{reason}; too short for a door"))
+                return
+            margin = min(MARGIN, (f.length - asset.width) / 2)
+            choice = (i, asset, margin, f.length / 2)
+        i, asset, margin, mid = choice
         x0, x1 = mid - asset.width / 2, mid + asset.width / 2
         self.doors += 1
         door_id = f"door|{self.floor.index}|{self.doors}"
@@ -308,5 +388,6 @@ def plan_passages(
         if e.kind == "access":
             p.passage(e.source, e.target, _is_open(floor, e.source, e.target, p.depth), "graph edge")
     p.connect_all()
+    p.front_door()
     p.windows(ceiling)
     return p.plan

@@ -79,12 +79,13 @@ def hub_spawn(layout: FloorLayout, hub: str, avoid: list[tuple[float, float]]) -
 
 
 def landing_pose(
-    room: Polygon, door_centre: tuple[float, float], outward: tuple[float, float]
+    room: Polygon, door_centre: tuple[float, float], outward: tuple[float, float],
+    steps: tuple[float, ...] = (0.75, 1.0, 0.6, 1.25, 0.5),
 ) -> AgentPose:
-    """Where an agent leaving a core through its door stands: in the adjoining ``room``, a step
-    beyond the door, facing away from the core."""
+    """Where an agent coming through a door stands: in ``room``, a step beyond the door (the
+    first of ``steps`` that has room), facing away from it (``outward``: into the room)."""
     inner = room.buffer(-CLEARANCE)
-    for step in (0.75, 1.0, 0.6, 1.25, 0.5):
+    for step in steps:
         x, y = door_centre[0] + outward[0] * step, door_centre[1] + outward[1] * step
         if inner.contains(Point(x, y)):
             break

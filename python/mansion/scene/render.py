@@ -127,7 +127,7 @@ def render_house(house: House, path: str | os.PathLike[str], *, title: str | Non
 
     ax.set_xlim(min(xs) - 0.5, max(xs) + 0.5)
     ax.set_ylim(min(zs) - 0.5, max(zs) + 0.5)
-    ax.set_title(title or house.id, fontsize=10)
+    ax.set_title(title or house.id or "", fontsize=10)
     fig.tight_layout()
     return save_figure(fig, path)
 

@@ -1,39 +1,50 @@
-"""Checks of a house JSON (and of a whole building) against what the simulator needs.
+"""``mansion validate``: checks of a house JSON (and of a whole building) faithful to AI2-THOR's
+loader (``ProceduralTools.CreateHouse`` at schema 1.0.0; docs/HOUSE_JSON.md).
 
-Every rule here is one the loader or the scene's users depend on (docs/HOUSE_JSON.md):
+Every problem has a severity. **Errors** are exactly what makes the loader throw, or leaves a
+robot unable to move; **warnings** are quality findings the simulator loads anyway. ``mansion
+validate`` exits 1 on errors only (``--strict``: on warnings too).
 
-- ``schema``: the house parses as schema 1.0.0 (``metadata.schema == "1.0.0"``), ids are unique;
-- ``room-polygon``: floor polygons lie at y = 0 and are simple with positive area;
-- ``room-overlap``: rooms do not overlap;
-- ``wall-geometry``: a wall is a vertical rectangle on the floor with two distinct bottom points;
-- ``wall-room``: a wall names a room that exists and bounds it, facing it (or, as an exterior
-  twin, facing away from it into the outside);
-- ``wall-closure``: each room's walls facing it cover its boundary exactly once;
-- ``wall-pair``: every wall has exactly one twin, the same stretch reversed;
-- ``hole-wall``: a door's or window's walls exist and its hole lies inside wall0;
-- ``one-hole-per-wall``: no wall carries two holes (the loader fails on the whole house);
-- ``door-floor``: door holes start at the floor;
-- ``door-rooms``: a door joins the two rooms it names (wall0 is room0's, wall1 room1's);
-- ``hole-twins``: wall1 is wall0's twin, so the hole mirrored onto wall1 lines up;
-- ``asset-position``: a hole's ``assetPosition`` is the hole's centre;
-- ``asset-id``: door, window and object assets exist in AI2-THOR's asset database, doors are
-  doorways and windows windows; materials exist in its material database;
-- ``object-in-room``: every object's centre lies inside a room (its own room when it names one)
-  and its footprint (the asset's bounding box, turned by its rotation) within that room, to 1 cm;
-- ``object-overlap``: no two floor objects of a room overlap by more than 1e-4 m², except a chair
-  or stool tucked under (``tuckedUnder``) the table or desk it is paired with;
-- ``object-child``: a small object lies on its receptacle: inside its footprint (1 cm), its
-  bottom on the receptacle's top;
-- ``object-reach``: an independent flood fill over the room's free space (the agent's radius,
-  0.25 m unless the floor records another, from every solid wall and object) from the cells just
-  inside its first door or opening an agent passes: every other such entrance is reached, every
-  object has a reached cell within 0.5 m of its footprint (in front of it when it is used from
-  one side), and no object stands on an agent pose;
-- ``reachable``: every room is reached from the hub through doors and empty walls, and every agent
-  pose stands inside a room.
+Errors (the loader throws, or the robot is stuck):
 
-For a building (its ``manifest.json``): every floor's house, plus ``core-align``: each core is a
-room of every floor it serves, at the same box, with a door, and its landing stands in a room.
+- ``schema``: the JSON does not parse as a house, or ``metadata.schema`` is not "1.0.0";
+- ``duplicate-id``: two rooms, or two doors / windows, share an id (the loader keys them);
+- ``one-hole-per-wall``: a wall carries two holes (the loader keys holes by wall);
+- ``hole-wall``: a door's or window's ``wall0`` does not exist;
+- ``hole-polygon``: a hole with fewer than two points;
+- ``hole-asset``: a door or window asset AI2-THOR does not have;
+- ``material``: a room's floor, a non-empty wall or the ceiling has a null or unknown material;
+- ``skybox``: an unknown skybox;
+- ``object-rotation``: an object (or a child) without ``rotation``;
+- ``spawn``: the agent pose stands in no room, or nowhere an agent fits near it;
+- ``navigable``: with every object removed, a room or a core (``metadata.core``) cannot be reached
+  from the spawn by an agent of radius 0.25 m keeping 0.05 m (clear passages >= 0.6 m) through
+  doors and openings (:mod:`mansion.scene.navigation`);
+- ``room-doors``: a room's doors and openings fall apart inside it (a strip narrower than the
+  agent is not part of the walkable room), or, in a house whose furnishing promised the agent's
+  room (``metadata.mansion.furnishing``: mansion's own), its furniture cuts them apart or shuts
+  one off (furniture is judged by its assets' bounding boxes, which over-approximate their
+  colliders: in other houses, ProcTHOR's among them, this is the warning ``furniture-cut``);
+- ``core-align`` (buildings): a core is not the same room at the same box on every floor it
+  serves, lacks a door, or its landing stands in no room.
+
+Warnings (loaded, but worth fixing): ``room-polygon``, ``room-overlap``, ``wall-geometry``,
+``wall-room``, ``wall-closure``, ``wall-pair`` (geometry of rooms and walls), ``hole-extent`` (a
+hole past its wall), ``door-floor``, ``door-rooms``, ``hole-twins``, ``asset-position``
+(``assetPosition`` is not ProcTHOR's: the hole's minimum + the wall-holes offset + half the
+asset's box), ``hole-asset-type`` (a window asset in a door...), ``object-asset`` (an object
+asset the loader skips), ``duplicate-element`` (walls or objects sharing an id),
+``object-in-room``, ``object-overlap``, ``object-child``, ``object-reach``, ``object-ceiling``
+(an object reaching above the ceiling), ``seat-physics`` (a tucked seat that is not kinematic and
+overlaps its table more than real houses do), ``furniture-cut`` (see above),
+``furniture-blocked`` (the furniture shuts the agent off from a doorstep it reached in the empty
+house), ``spawn-missing`` (no agent pose: navigability not checked), ``lights`` (more
+shadow-casting lights than real houses use).
+
+ProcTHOR's conventions are accepted: no top-level ``id``; the outside door with ``room0 ==
+room1`` and ``wall1`` the exterior twin; exterior twins with ``roomId: "exterior"``; children
+inside shelves and fridges; chairs overlapping tables without ``tuckedUnder``; wall-mounted
+objects above the floor; ``metadata.agent`` instead of ``agentPoses``.
 
 Each problem names the element (room, wall, door, window, object or core id); nothing stops at
 the first problem.
@@ -44,7 +55,7 @@ from __future__ import annotations
 import json
 import math
 import os
-from collections import defaultdict, deque
+from collections import defaultdict
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -55,24 +66,53 @@ from shapely.geometry import Point, Polygon
 from shapely.strtree import STRtree
 
 from mansion.exceptions import InvalidInputError
-from mansion.scene.databases import asset_ids, material_names, skyboxes
 from mansion.placement import check
 from mansion.placement.assets import FRONT_TYPES, TABLES, TUCKABLE
+from mansion.scene import navigation
+from mansion.scene.databases import asset_ids, hole_asset_position, material_names, skyboxes
 from mansion.scene.entrances import room_entrances
 from mansion.scene.house import HOUSE_SCHEMA, House, HouseObject, Vec3, Wall
 from mansion.scene.manifest import BuildingManifest
 
-__all__ = ["Problem", "validate_building", "validate_house", "validate_path"]
+__all__ = [
+    "ERRORS",
+    "Problem",
+    "TUCKED_OVERLAP",
+    "errors",
+    "validate_building",
+    "validate_house",
+    "validate_path",
+    "validate_paths",
+]
+
+#: The rules whose problems are errors (the loader throws, or the robot cannot move); every
+#: other rule is a warning.
+ERRORS = frozenset({
+    "schema", "duplicate-id", "one-hole-per-wall", "hole-wall", "hole-polygon", "hole-asset",
+    "material", "skybox", "object-rotation", "spawn", "navigable", "room-doors",
+    "core-align",
+})
+#: Real tucked seats (ProcTHOR's chairs at tables) overlap their table by at most this share of
+#: their footprint; a non-kinematic seat overlapping more is pushed out by the physics.
+TUCKED_OVERLAP = 0.38
+#: Real houses light a floor with at most this many shadow-casting lights.
+MAX_SHADOW_LIGHTS = 10
+#: An object's footprint may leave its room by this much area beyond 1 cm (real houses: 0.012 m²).
+OVERHANG_AREA = 0.02
 
 EPS = 1e-4
+#: A hole may run this far past its wall's end (real houses: 0.3 mm) (m).
+HOLE_TOLERANCE = 1e-3
 #: An object's footprint may leave its room by this much (issue 6's #OB: 1 cm).
 OBJECT_TOLERANCE = 0.01
+#: A small object may rest this far above its receptacle's box (ProcTHOR's: up to 6 cm) (m).
+SETTLE = 0.08
 #: Two floor objects overlap when they share more than this (m², issue 6's #CN).
 OVERLAP_AREA = 1e-4
 #: The agent reaches an object from a free cell this close to its footprint (m).
 REACH = 0.5
 #: The agent's radius when the house records none (AI2-THOR's agents fit in 0.25 m).
-AGENT_RADIUS = 0.25
+AGENT_RADIUS = navigation.AGENT_RADIUS
 
 
 @dataclass(frozen=True)
@@ -87,7 +127,8 @@ class _Placed:
 
 
 def _tucked(seat: _Placed, table: _Placed) -> bool:
-    return (seat.obj.tucked_under == table.obj.id and seat.type in TUCKABLE
+    """A chair or stool at a table or desk: ours say so (``tuckedUnder``), ProcTHOR's do not."""
+    return (seat.obj.tucked_under in (None, table.obj.id) and seat.type in TUCKABLE
             and table.type in TABLES)
 
 
@@ -98,9 +139,23 @@ class Problem:
     message: str
     source: str = ""
 
+    @property
+    def severity(self) -> str:
+        """"error" (the loader throws or the robot cannot move) or "warning"."""
+        return "error" if self.rule in ERRORS else "warning"
+
     def __str__(self) -> str:
         where = f"{self.source}: " if self.source else ""
-        return f"{where}[{self.rule}] {self.element}: {self.message}"
+        return f"{where}{self.severity} [{self.rule}] {self.element}: {self.message}"
+
+    def to_dict(self) -> dict[str, str]:
+        return {"severity": self.severity, "rule": self.rule, "element": self.element,
+                "message": self.message, "source": self.source}
+
+
+def errors(problems: list[Problem]) -> list[Problem]:
+    """The problems that are errors."""
+    return [p for p in problems if p.severity == "error"]
 
 
 def _xz(v: Vec3) -> tuple[float, float]:
@@ -168,21 +223,32 @@ class _HouseCheck:
         self.assets()
         self.entrances = room_entrances(self.house)
         self.objects()
+        self.lights()
         self.reach()
         return self.problems
 
     def ids(self) -> None:
-        seen: dict[str, str] = {}
+        """Rooms, and doors with windows, are keyed by id in the loader (a duplicate throws);
+        walls and objects only should be unique."""
         h = self.house
-        groups: dict[str, list[Any]] = {
-            "room": h.rooms, "wall": h.walls, "door": h.doors, "window": h.windows,
-            "object": h.objects,
-        }
-        for kind, items in groups.items():
+        for kind, items in (("room", h.rooms), ("door or window", [*h.doors, *h.windows])):
+            seen: set[str] = set()
             for item in items:
                 if item.id in seen:
-                    self.add("schema", item.id, f"{kind} id already used by a {seen[item.id]}")
-                seen[item.id] = kind
+                    self.add("duplicate-id", item.id, f"{kind} id used twice (the loader fails)")
+                seen.add(item.id)
+
+        def all_objects(items: list[HouseObject]) -> list[HouseObject]:
+            return [x for o in items for x in (o, *all_objects(o.children))]
+
+        named: list[tuple[str, list[str]]] = [
+            ("wall", [w.id for w in h.walls]), ("object", [o.id for o in all_objects(h.objects)])]
+        for kind, ids in named:
+            seen = set()
+            for eid in ids:
+                if eid in seen:
+                    self.add("duplicate-element", eid, f"{kind} id used twice")
+                seen.add(eid)
 
     def rooms(self) -> dict[str, Polygon]:
         polys: dict[str, Polygon] = {}
@@ -216,6 +282,9 @@ class _HouseCheck:
                 self.add("wall-geometry", wall.id, "wall polygon is not a rectangle")
             segs[wall.id] = seg
             poly = self.polys.get(wall.room_id)
+            if wall.room_id == "exterior":  # ProcTHOR's exterior twins
+                self.faces[wall.id] = False
+                continue
             if poly is None:
                 if wall.room_id not in {r.id for r in self.house.rooms}:
                     self.add("wall-room", wall.id, f"names room {wall.room_id!r}, which does not exist")
@@ -285,25 +354,33 @@ class _HouseCheck:
             for hole in items:
                 for w in (hole.wall0, hole.wall1):
                     per_wall[w].append(hole.id)
-                missing = [w for w in (hole.wall0, hole.wall1) if w not in walls]
-                if missing:
-                    self.add("hole-wall", hole.id, f"names wall(s) {missing} that do not exist")
+                if hole.wall0 not in walls:
+                    self.add("hole-wall", hole.id, f"wall0 {hole.wall0!r} does not exist (the loader fails)")
+                    continue
+                if hole.wall1 not in walls:
+                    self.add("hole-twins", hole.id, f"wall1 {hole.wall1!r} does not exist")
                     continue
                 for r in (hole.room0, hole.room1):
                     if r not in rooms:
                         self.add("door-rooms", hole.id, f"names room {r!r}, which does not exist")
                 w0, w1 = walls[hole.wall0], walls[hole.wall1]
-                if w0.room_id != hole.room0 or w1.room_id != hole.room1:
+                # ProcTHOR's outside door: room0 == room1, wall1 the exterior twin (its roomId
+                # the room's or "exterior")
+                outside = hole.room0 == hole.room1 and (
+                    w1.room_id == "exterior" or self.faces.get(w1.id) is False)
+                if w0.room_id != hole.room0 or (w1.room_id != hole.room1 and not outside):
                     self.add("door-rooms", hole.id, f"joins {hole.room0!r} and {hole.room1!r} but "
                              f"its walls belong to {w0.room_id!r} and {w1.room_id!r}")
-                if kind == "door" and hole.room0 == hole.room1:
-                    self.add("door-rooms", hole.id, "joins a room to itself")
-                lo, hi = hole.hole_polygon
+                if kind == "door" and hole.room0 == hole.room1 and not outside:
+                    self.add("door-rooms", hole.id, "joins a room to itself (and is not a door to "
+                             "the outside: wall1 is not the exterior twin)")
+                lo, hi = hole.hole_polygon[0], hole.hole_polygon[-1]
                 s0, s1 = self.segs.get(w0.id), self.segs.get(w1.id)
                 if s0 is None or s1 is None:
                     continue
-                if not (-EPS <= lo.x < hi.x <= s0.length + EPS and -EPS <= lo.y < hi.y <= s0.height + EPS):
-                    self.add("hole-wall", hole.id, f"hole x {lo.x:.3f}..{hi.x:.3f}, y {lo.y:.3f}..{hi.y:.3f} "
+                tol = HOLE_TOLERANCE
+                if not (-tol <= lo.x < hi.x <= s0.length + tol and -tol <= lo.y < hi.y <= s0.height + tol):
+                    self.add("hole-extent", hole.id, f"hole x {lo.x:.3f}..{hi.x:.3f}, y {lo.y:.3f}..{hi.y:.3f} "
                              f"is not inside wall {w0.id!r} ({s0.length:.3f} × {s0.height:.3f} m)")
                 if kind == "door" and abs(lo.y) > EPS:
                     self.add("door-floor", hole.id, f"door hole starts at y = {lo.y:.3f}, not the floor")
@@ -314,13 +391,16 @@ class _HouseCheck:
                     c, d = s1.at(s1.length - lo.x), s1.at(s1.length - hi.x)
                     if math.dist(a, c) > 1e-3 or math.dist(b, d) > 1e-3:
                         self.add("hole-twins", hole.id, "the hole mirrored onto wall1 does not line up")
-                centre = ((lo.x + hi.x) / 2, (lo.y + hi.y) / 2)
+                want = hole_asset_position(hole.asset_id, (lo.x, lo.y))
                 pos = hole.asset_position
-                if abs(pos.x - centre[0]) > 1e-3 or abs(pos.y - centre[1]) > 1e-3:
-                    self.add("asset-position", hole.id, "assetPosition is not the hole's centre")
+                if want is not None and (abs(pos.x - want[0]) > 1e-3 or abs(pos.y - want[1]) > 1e-3):
+                    self.add("asset-position", hole.id, f"assetPosition ({pos.x:.4f}, {pos.y:.4f}) is not "
+                             f"ProcTHOR's ({want[0]:.4f}, {want[1]:.4f}): hole minimum + wall-holes offset "
+                             "+ half the asset's box")
         for wid, holes in per_wall.items():
             if len(holes) > 1:
-                self.add("one-hole-per-wall", wid, f"carries {len(holes)} holes: {sorted(holes)}")
+                self.add("one-hole-per-wall", wid, f"carries {len(holes)} holes: {sorted(holes)} "
+                         "(the loader fails)")
 
     def assets(self) -> None:
         db = asset_ids()
@@ -329,27 +409,31 @@ class _HouseCheck:
             for hole in items:
                 rec = db.get(hole.asset_id)
                 if rec is None:
-                    self.add("asset-id", hole.id, f"asset {hole.asset_id!r} is not in AI2-THOR's asset database")
+                    self.add("hole-asset", hole.id, f"asset {hole.asset_id!r} is not in AI2-THOR's "
+                             "asset database (the loader fails)")
                 elif rec["objectType"] not in types:
-                    self.add("asset-id", hole.id, f"asset {hole.asset_id!r} is a {rec['objectType']}, not a {kind}")
+                    self.add("hole-asset-type", hole.id, f"asset {hole.asset_id!r} is a {rec['objectType']}, not a {kind}")
 
         def objects(items: list[Any]) -> None:
             for obj in items:
                 if obj.asset_id not in db:
-                    self.add("asset-id", obj.id, f"asset {obj.asset_id!r} is not in AI2-THOR's asset database")
+                    self.add("object-asset", obj.id, f"asset {obj.asset_id!r} is not in AI2-THOR's "
+                             "asset database (the loader skips it)")
                 objects(obj.children)
 
         objects(self.house.objects)
         names = material_names()
-        mats = [(r.id, r.floor_material) for r in self.house.rooms] + [
-            (w.id, w.material) for w in self.house.walls
-        ] + [("proceduralParameters", self.house.procedural_parameters.ceiling_material)]
-        for eid, mat in mats:
-            if mat is not None and mat.name is not None and mat.name not in names:
-                self.add("asset-id", eid, f"material {mat.name!r} is not in AI2-THOR's material database")
+        mats = [(r.id, "floor", r.floor_material) for r in self.house.rooms] + [
+            (w.id, "wall", w.material) for w in self.house.walls if not w.empty
+        ] + [("proceduralParameters", "ceiling", self.house.procedural_parameters.ceiling_material)]
+        for eid, what, mat in mats:
+            if mat is None or mat.name is None:
+                self.add("material", eid, f"{what} material is null (the loader fails)")
+            elif mat.name not in names:
+                self.add("material", eid, f"{what} material {mat.name!r} is not in AI2-THOR's material database")
         sky = self.house.procedural_parameters.skybox_id
         if sky not in skyboxes():
-            self.add("asset-id", "proceduralParameters", f"skybox {sky!r} is not an AI2-THOR skybox")
+            self.add("skybox", "proceduralParameters", f"skybox {sky!r} is not an AI2-THOR skybox")
 
     def objects(self) -> None:
         db = asset_ids()
@@ -366,17 +450,41 @@ class _HouseCheck:
             room = obj.room if obj.room in self.polys else inside[0]
             placed = self._placed(obj, db)
             if placed is None:
-                continue  # an unknown asset: reported under asset-id
+                continue  # an unknown asset: reported under object-asset
             out = placed.fp.difference(self.polys[room].buffer(OBJECT_TOLERANCE, join_style="mitre"))
-            if out.area > 1e-6:
+            if out.area > OVERHANG_AREA:
                 self.add("object-in-room", obj.id, f"footprint leaves room {room!r} "
                          f"({out.area:.4f} m² outside, beyond {OBJECT_TOLERANCE * 100:.0f} cm)")
             floor[room].append(placed)
             self.children(placed, db)
+            self.ceiling(placed, db)
         for room, items in floor.items():
             self.overlaps(items)
             self.object_reach(room, items)
         self.poses_clear([x for items in floor.values() for x in items])
+
+    def _ceiling_height(self) -> float | None:
+        record = self.house.metadata.mansion
+        if record is not None:
+            return record.ceiling_height
+        heights = [s.height for s in self.segs.values()]
+        return max(heights) if heights else None
+
+    def ceiling(self, placed: _Placed, db: dict[str, Any]) -> None:
+        """Nothing (small objects on shelves included) reaches above the ceiling."""
+        height = self._ceiling_height()
+        if height is None:
+            return
+        stack = [(placed.obj, placed.height)]
+        while stack:
+            obj, h = stack.pop()
+            top = obj.position.y + h / 2
+            if top > height + OBJECT_TOLERANCE:
+                self.add("object-ceiling", obj.id, f"reaches y = {top:.3f}, above the ceiling at {height:.3f}")
+            for child in obj.children:
+                rec = db.get(child.asset_id)
+                if rec is not None:
+                    stack.append((child, rec["boundingBox"]["y"]))
 
     def _placed(self, obj: HouseObject, db: dict[str, Any]) -> _Placed | None:
         rec = db.get(obj.asset_id)
@@ -389,6 +497,7 @@ class _HouseCheck:
     def children(self, parent: _Placed, db: dict[str, Any]) -> None:
         """Small objects lie on their receptacle: inside its footprint, resting on its top."""
         top = parent.obj.position.y + parent.height / 2
+        base = parent.obj.position.y - parent.height / 2
         area = parent.fp.buffer(OBJECT_TOLERANCE, join_style="mitre")
         for child in parent.obj.children:
             c = self._placed(child, db)
@@ -397,9 +506,11 @@ class _HouseCheck:
             if c.fp.difference(area).area > 1e-6:
                 self.add("object-child", child.id, f"footprint leaves its receptacle {parent.obj.id!r}")
             bottom = child.position.y - c.height / 2
-            if abs(bottom - top) > OBJECT_TOLERANCE:
-                self.add("object-child", child.id, f"rests at y = {bottom:.3f}, not on the top of "
-                         f"{parent.obj.id!r} (y = {top:.3f})")
+            # on its receptacle's top (ProcTHOR's settle up to a few cm above it), or inside it
+            # (a shelf's or a fridge's own shelves)
+            if not base - OBJECT_TOLERANCE <= bottom <= top + SETTLE:
+                self.add("object-child", child.id, f"rests at y = {bottom:.3f}, neither on nor in "
+                         f"{parent.obj.id!r} (y {base:.3f}..{top:.3f})")
             if child.children:
                 self.children(c, db)
 
@@ -412,7 +523,16 @@ class _HouseCheck:
                     continue
                 b = items[int(j)]
                 area = a.fp.intersection(b.fp).area
-                if area <= OVERLAP_AREA or _tucked(a, b) or _tucked(b, a):
+                for seat, table in ((a, b), (b, a)):
+                    if (_tucked(seat, table) and not seat.obj.kinematic
+                            and area > TUCKED_OVERLAP * seat.fp.area):
+                        self.add("seat-physics", seat.obj.id, f"is not kinematic and overlaps "
+                                 f"{table.obj.id!r} by {100 * area / seat.fp.area:.0f} % of its "
+                                 f"footprint (real tucked seats: at most {TUCKED_OVERLAP:.0%})")
+                # objects at different heights (a picture above a sideboard) do not collide
+                apart = (a.obj.position.y - a.height / 2 >= b.obj.position.y + b.height / 2 - 1e-3
+                         or b.obj.position.y - b.height / 2 >= a.obj.position.y + a.height / 2 - 1e-3)
+                if area <= OVERLAP_AREA or apart or _tucked(a, b) or _tucked(b, a):
                     continue
                 self.add("object-overlap", a.obj.id, f"overlaps {b.obj.id!r} by {area:.4f} m²")
 
@@ -468,60 +588,114 @@ class _HouseCheck:
                 if x.fp.distance(p) < radius:
                     self.add("object-reach", name, f"object {x.obj.id!r} stands where the agent is posed")
 
-    def _radius(self) -> float:
+    def _furnishing_radius(self) -> float | None:
         record = self.house.metadata.mansion
         if record is not None and record.furnishing is not None:
             return record.furnishing.agent_radius
-        return AGENT_RADIUS
+        return None
+
+    def _radius(self) -> float:
+        radius = self._furnishing_radius()
+        return AGENT_RADIUS if radius is None else radius
 
     def house_room(self, rid: str) -> Any:
         return next(r for r in self.house.rooms if r.id == rid)
 
+    def lights(self) -> None:
+        shadows = [x for x in self.house.procedural_parameters.lights
+                   if x.shadow is not None and x.shadow.type.lower() != "none"]
+        if len(shadows) > MAX_SHADOW_LIGHTS:
+            self.add("lights", "proceduralParameters", f"{len(shadows)} shadow-casting lights "
+                     f"(real houses: at most {MAX_SHADOW_LIGHTS} a floor)")
+
     def reach(self) -> None:
-        for mode, pose in self.house.metadata.agent_poses.items():
-            p = Point(pose.position.x, pose.position.z)
-            if not any(poly.contains(p) for poly in self.polys.values()):
-                self.add("reachable", f"agentPoses.{mode}", "the agent pose stands in no room")
-        record = self.house.metadata.mansion
-        if record is None or record.hub not in self.polys:
-            if record is not None:
-                self.add("reachable", record.hub, "the hub named in metadata.mansion is not a room")
+        """The robot can move: it stands at the spawn, reaches every room and core with the
+        objects removed, walks between every room's doors inside it, and the furniture shuts it
+        off from no doorstep (:mod:`mansion.scene.navigation`)."""
+        pose = navigation.spawn_pose(self.house)
+        if pose is None:
+            self.add("spawn-missing", "metadata", "no agent pose (agentPoses or agent): navigability not checked")
             return
-        walls = {w.id: w for w in self.house.walls}
-        links: dict[str, set[str]] = defaultdict(set)
-        for door in self.house.doors:
-            links[door.room0].add(door.room1)
-            links[door.room1].add(door.room0)
-        for wid, wall in walls.items():
-            twin = self.twin.get(wid)
-            if wall.empty and twin is not None and walls[twin].empty:
-                a, b = wall.room_id, walls[twin].room_id
-                if a != b:
-                    links[a].add(b)
-                    links[b].add(a)
-        seen = {record.hub}
-        queue = deque(seen)
-        while queue:
-            for v in links[queue.popleft()]:
-                if v not in seen:
-                    seen.add(v)
-                    queue.append(v)
-        for rid in self.polys:
-            if rid not in seen:
-                self.add("reachable", rid, f"is not reached from the hub {record.hub!r} through doors or openings")
+        p = Point(pose.position.x, pose.position.z)
+        if not any(poly.covers(p) for poly in self.polys.values()):
+            self.add("spawn", "metadata.agentPoses", f"the agent pose ({p.x:.2f}, {p.y:.2f}) stands in no room")
+            return
+        radius, margin = self._radius(), navigation.MARGIN
+        lost = navigation.unreachable_rooms(self.house, radius=radius, margin=margin)
+        if lost is None:
+            self.add("spawn", "metadata.agentPoses", f"an agent of radius {radius} m (+{margin} m) "
+                     f"cannot stand within 0.5 m of the pose ({p.x:.2f}, {p.y:.2f})")
+            return
+        cores = {r.id for r in self.house.rooms if r.metadata and r.metadata.core}
+        for rid in lost:
+            what = "core" if rid in cores else "room"
+            self.add("navigable", rid, f"{what} not reached from the spawn by an agent of radius "
+                     f"{radius} m keeping {margin} m (passages narrower than "
+                     f"{2 * (radius + margin):.2f} m), even with every object removed")
+        # Furniture is judged by its assets' bounding boxes, which over-approximate their
+        # colliders: an error for houses whose furnishing promised the agent's room (ours record
+        # it in metadata.mansion.furnishing), a warning for the others (ProcTHOR's own houses
+        # have such rooms).
+        promised = self._furnishing_radius() is not None
+        for cut in navigation.disconnected_entrances(self.house, radius=radius, margin=margin):
+            parts = " | ".join(", ".join(g) for g in cut.groups)
+            shut = f"; {', '.join(cut.blocked)} reached by no free space" if cut.blocked else ""
+            if not cut.furniture:
+                self.add("room-doors", cut.room, f"its doors and openings fall apart inside it "
+                         f"(a strip narrower than {2 * (radius + margin):.2f} m): {parts}{shut}")
+            else:
+                self.add("room-doors" if promised else "furniture-cut", cut.room,
+                         f"its furniture cuts its doors apart: {parts}{shut}")
+        for rid, eid in navigation.blocked_entrances(self.house, radius=radius, margin=margin):
+            self.add("furniture-blocked", rid,
+                     f"the furniture shuts the agent off from the doorstep of {eid!r} in this room")
+
+
+def _loader_traps(data: dict[str, Any], source: str) -> tuple[list[Problem], set[tuple[Any, ...]]]:
+    """What the loader throws on before anything else: hole polygons of fewer than two points and
+    objects without a rotation (both read blindly). Returns the problems and the locations the
+    schema errors need not report again."""
+    out: list[Problem] = []
+    seen: set[tuple[Any, ...]] = set()
+    for kind in ("doors", "windows"):
+        for i, hole in enumerate(data.get(kind) or []):
+            pts = hole.get("holePolygon") if isinstance(hole, dict) else None
+            if not isinstance(pts, list) or len(pts) < 2:
+                out.append(Problem("hole-polygon", str(hole.get("id", f"{kind}.{i}")) if isinstance(hole, dict) else f"{kind}.{i}",
+                                   "holePolygon has fewer than two points (the loader fails)", source))
+                seen.add((kind, i, "holePolygon"))
+
+    def objects(items: Any, loc: tuple[Any, ...]) -> None:
+        for i, obj in enumerate(items if isinstance(items, list) else []):
+            if not isinstance(obj, dict):
+                continue
+            if obj.get("rotation") is None:
+                out.append(Problem("object-rotation", str(obj.get("id", ".".join(map(str, (*loc, i))))),
+                                   "object has no rotation (the loader fails)", source))
+                seen.add((*loc, i, "rotation"))
+            objects(obj.get("children"), (*loc, i, "children"))
+
+    objects(data.get("objects"), ("objects",))
+    return out, seen
 
 
 def validate_house(house: House | dict[str, Any], *, source: str = "") -> list[Problem]:
-    """Every problem of one house (a :class:`House` or the parsed JSON)."""
-    if not isinstance(house, House):
-        try:
-            house = House.model_validate(house)
-        except ValidationError as exc:
-            return [
-                Problem("schema", ".".join(str(p) for p in e["loc"]) or "house", e["msg"], source)
-                for e in exc.errors(include_url=False)
-            ]
-    return _HouseCheck(house, source).run()
+    """Every problem of one house (a :class:`House` or the parsed JSON), errors and warnings."""
+    data = house.to_dict() if isinstance(house, House) else house
+    if not isinstance(data, dict):
+        return [Problem("schema", "house", "a house is a JSON object", source)]
+    traps, covered = _loader_traps(data, source)
+    try:
+        parsed = House.model_validate(data)
+    except ValidationError as exc:
+        return traps + [
+            Problem("schema", ".".join(str(p) for p in e["loc"]) or "house", e["msg"], source)
+            for e in exc.errors(include_url=False)
+            if not any(tuple(e["loc"][:len(c)]) == c for c in covered)
+        ]
+    if traps:
+        return traps
+    return _HouseCheck(parsed, source).run()
 
 
 def _read(path: Path) -> Any:
@@ -581,14 +755,24 @@ def validate_building(manifest_path: str | os.PathLike[str]) -> list[Problem]:
 
 
 def validate_path(path: str | os.PathLike[str]) -> list[Problem]:
-    """A house JSON file, a building's ``manifest.json``, or a folder holding one."""
+    """A house JSON file, a building's ``manifest.json``, or a folder holding one (or
+    ``scenes/manifest.json``, or else house JSON files)."""
     p = Path(path)
     if p.is_dir():
         for candidate in (p / "manifest.json", p / "scenes" / "manifest.json"):
             if candidate.is_file():
                 return validate_building(candidate)
-        raise InvalidInputError(f"{str(p)!r} holds no manifest.json (nor scenes/manifest.json)")
+        houses = sorted(p.glob("*.json"))
+        if not houses:
+            raise InvalidInputError(f"{str(p)!r} holds no manifest.json (nor scenes/manifest.json) "
+                                    "and no house JSON")
+        return [q for h in houses for q in validate_path(h)]
     data = _read(p)
     if isinstance(data, dict) and "floors" in data and "rooms" not in data:
         return validate_building(p)
     return validate_house(data, source=str(p))
+
+
+def validate_paths(paths: list[str | os.PathLike[str]]) -> list[Problem]:
+    """Every problem of many paths (house JSONs, manifests, building folders), in order."""
+    return [q for p in paths for q in validate_path(p)]

@@ -1,0 +1,355 @@
+"""Where a robot can go on one floor: the navigability checks of a house JSON (issue 17).
+
+An agent of radius ``radius`` keeps ``margin`` from everything solid, so its centre stays at least
+``clearance = radius + margin`` from every solid wall and every object, and a passage lets it
+through when it is at least ``2 · clearance`` wide (0.6 m for AI2-THOR's 0.25 m agent with a
+0.05 m margin). The geometry is exact (shapely), not a grid:
+
+- the floor's free space is the union of its rooms, shrunk by the clearance from the outside,
+  minus every solid wall piece (a non-empty wall without its door holes) grown by the clearance.
+  Door holes cut both sides of a wall (wall1's hole is wall0's mirrored, as the loader cuts it);
+  a stretch is open only where both of its walls are ``empty``;
+- :func:`unreachable_rooms`: with every object removed, the rooms (stair and elevator cores
+  among them) with no free space connected to the spawn pose;
+- :func:`disconnected_entrances`: inside one room, with its floor objects in place, the doors and
+  openings that the agent cannot walk between without leaving the room (a strip narrower than the
+  agent, or furniture, cuts them apart).
+
+The ``sim`` helpers and the measurements use the same functions, so a figure quoted in the README
+and an error of ``mansion validate`` are the same test.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+import shapely
+from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry.base import BaseGeometry
+
+from mansion.placement import check
+from mansion.scene.databases import asset_ids
+from mansion.scene.entrances import RoomEntrance, room_entrances
+from mansion.scene.house import AgentPose, Door, House, Wall
+
+__all__ = [
+    "AGENT_RADIUS",
+    "MARGIN",
+    "RoomCut",
+    "disconnected_entrances",
+    "blocked_entrances",
+    "floor_objects",
+    "free_space",
+    "open_space",
+    "reached_rooms",
+    "wall_pieces",
+    "solid_wall_pieces",
+    "spawn_pose",
+    "unreachable_rooms",
+]
+
+#: AI2-THOR's agents fit in a circle of this radius (m).
+AGENT_RADIUS = 0.25
+#: Room kept between the agent and anything solid (m): passages must be 2 · (0.25 + 0.05) wide.
+MARGIN = 0.05
+#: Geometry tolerance (m): a passage exactly 2 · clearance wide still lets the agent through.
+_TOL = 5e-3
+#: Free space this close to a door or opening (beyond the clearance) counts as its doorstep (m).
+_DOORSTEP = 0.05
+#: A room counts as reached when this much of its floor is reached free space (m²).
+_AREA = 1e-4
+#: Objects whose bottom is higher than this do not block the agent (wall-mounted pictures) (m).
+_OVERHEAD = 1.6
+#: Objects lower than this (rugs, dog beds) the agent's collider steps over (m).
+_UNDERFOOT = 0.2
+
+Pt = tuple[float, float]
+
+
+def _ring(points: Iterable[object]) -> Polygon:
+    return Polygon([(p.x, p.z) for p in points])  # type: ignore[attr-defined]
+
+
+def _room_polygons(house: House) -> dict[str, Polygon]:
+    out = {}
+    for room in house.rooms:
+        poly = _ring(room.floor_polygon)
+        if not poly.is_valid:
+            poly = poly.buffer(0)
+        if poly.area > 0:
+            out[room.id] = poly
+    return out
+
+
+def _cut(span: tuple[float, float], holes: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    pieces = [span]
+    for lo, hi in holes:
+        nxt = []
+        for a, b in pieces:
+            if hi <= a or lo >= b:
+                nxt.append((a, b))
+                continue
+            if lo > a:
+                nxt.append((a, lo))
+            if hi < b:
+                nxt.append((hi, b))
+        pieces = nxt
+    return [(a, b) for a, b in pieces if b - a > 1e-6]
+
+
+def solid_wall_pieces(house: House) -> list[LineString]:
+    """Every piece of wall the agent cannot cross: each non-empty wall minus its door holes (a
+    stretch whose two walls are both empty is an opening and has no piece)."""
+    return wall_pieces(house.walls, house.doors)
+
+
+def wall_pieces(all_walls: list[Wall], doors: list[Door]) -> list[LineString]:
+    """:func:`solid_wall_pieces` of these walls and doors (a house still being built)."""
+    holes: dict[str, list[tuple[float, float]]] = {}
+    walls = {w.id: w for w in all_walls}
+    for door in doors:
+        if len(door.hole_polygon) < 2:
+            continue
+        lo, hi = door.hole_polygon[0].x, door.hole_polygon[-1].x
+        holes.setdefault(door.wall0, []).append((lo, hi))
+        w1 = walls.get(door.wall1)
+        if w1 is not None and door.wall1 != door.wall0:
+            (a, b) = w1.segment()
+            n = math.dist(a, b)
+            holes.setdefault(door.wall1, []).append((n - hi, n - lo))
+    out = []
+    for wall in all_walls:
+        if wall.empty:
+            continue
+        a, b = wall.segment()
+        n = math.dist(a, b)
+        if n <= 0:
+            continue
+        for t0, t1 in _cut((0.0, n), holes.get(wall.id, [])):
+            p = (a[0] + (b[0] - a[0]) * t0 / n, a[1] + (b[1] - a[1]) * t0 / n)
+            q = (a[0] + (b[0] - a[0]) * t1 / n, a[1] + (b[1] - a[1]) * t1 / n)
+            out.append(LineString([p, q]))
+    return out
+
+
+def free_space(house: House, clearance: float, obstacles: Iterable[Polygon] = ()) -> BaseGeometry:
+    """Where the agent's centre may stand on the floor: at least ``clearance`` from the outside,
+    every solid wall piece and every ``obstacles`` footprint."""
+    return open_space(_room_polygons(house).values(), solid_wall_pieces(house), clearance, obstacles)
+
+
+def open_space(
+    rooms: Iterable[Polygon], pieces: list[LineString], clearance: float,
+    obstacles: Iterable[Polygon] = (),
+) -> BaseGeometry:
+    """:func:`free_space` of these room polygons and solid wall pieces."""
+    c = clearance - _TOL
+    floor = shapely.union_all(list(rooms))
+    blocked = [s.buffer(c) for s in pieces] + [o.buffer(c) for o in obstacles]
+    space = floor.buffer(-c)
+    if blocked:
+        space = space.difference(shapely.union_all(blocked))
+    return space
+
+
+def reached_rooms(space: BaseGeometry, rooms: dict[str, Polygon], start: Pt) -> set[str]:
+    """The rooms the piece of ``space`` nearest ``start`` (within 0.5 m) reaches."""
+    p = Point(start)
+    parts = _parts(space)
+    if not parts:
+        return set()
+    near = min(parts, key=lambda g: g.distance(p))
+    if near.distance(p) > 0.5:
+        return set()
+    return {rid for rid, poly in rooms.items() if near.intersection(poly).area > _AREA}
+
+
+def _parts(geom: BaseGeometry) -> list[Polygon]:
+    return [g for g in getattr(geom, "geoms", [geom]) if isinstance(g, Polygon) and not g.is_empty]
+
+
+def spawn_pose(house: House) -> AgentPose | None:
+    """The agent's start: ``metadata.agentPoses`` (its ``default``, else its first) or the older
+    ProcTHOR ``metadata.agent``."""
+    poses = house.metadata.agent_poses
+    if poses:
+        return poses.get("default") or next(iter(poses.values()))
+    older = (house.metadata.model_extra or {}).get("agent")
+    if isinstance(older, dict):
+        try:
+            return AgentPose.model_validate(older)
+        except ValueError:
+            return None
+    return None
+
+
+def unreachable_rooms(
+    house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
+    start: Pt | None = None,
+) -> list[str] | None:
+    """The rooms (cores included) an agent of ``radius`` keeping ``margin`` cannot reach from the
+    spawn pose (or ``start``) with every object removed, in the house's order. None when the
+    house has no spawn pose or the agent cannot stand anywhere near it (0.5 m)."""
+    if start is None:
+        pose = spawn_pose(house)
+        if pose is None:
+            return None
+        start = (pose.position.x, pose.position.z)
+    space = free_space(house, radius + margin)
+    p = Point(start)
+    parts = _parts(space)
+    if not parts:
+        return None
+    near = min(parts, key=lambda g: g.distance(p))
+    if near.distance(p) > 0.5:
+        return None
+    return [rid for rid, poly in _room_polygons(house).items()
+            if near.intersection(poly).area <= _AREA]
+
+
+@dataclass(frozen=True)
+class RoomCut:
+    """A room whose doors and openings fall apart inside it: ``groups`` of entrance ids the agent
+    walks between (one group per piece of free space), ``blocked`` the entrances no free space
+    reaches (``furniture``: blocked only once the room's objects stand in it)."""
+
+    room: str
+    groups: list[list[str]]
+    blocked: list[str]
+    furniture: bool
+
+
+def floor_objects(house: House, room: str | None = None) -> list[Polygon]:
+    """Footprints of the house's floor objects (of ``room`` when given) that stand in the agent's
+    way: known assets (the loader skips the others) whose bottom is below the agent's head."""
+    db = asset_ids()
+    out = []
+    for obj in house.objects:
+        if room is not None and obj.room is not None and obj.room != room:
+            continue
+        rec = db.get(obj.asset_id)
+        if rec is None:
+            continue
+        bb = rec["boundingBox"]
+        if obj.position.y - bb["y"] / 2 > _OVERHEAD or obj.position.y + bb["y"] / 2 < _UNDERFOOT:
+            continue
+        out.append(check.footprint((obj.position.x, obj.position.z), bb["x"], bb["z"], obj.rotation.y))
+    return out
+
+
+def _groups(space: BaseGeometry, ways: list[RoomEntrance], reach: float) -> tuple[list[list[str]], list[str]]:
+    """Entrances grouped by the pieces of ``space`` they open onto (an entrance touching two
+    pieces joins them: the agent crosses through the doorway), and those touching none."""
+    parts = _parts(space)
+    root = list(range(len(parts)))
+
+    def find(k: int) -> int:
+        while root[k] != k:
+            root[k] = root[root[k]]
+            k = root[k]
+        return k
+
+    blocked: list[str] = []
+    touches: list[tuple[str, int]] = []
+    for e in ways:
+        line = LineString([e.a, e.b])
+        touching = [k for k, g in enumerate(parts) if g.distance(line) <= reach]
+        if not touching:
+            blocked.append(e.id)
+            continue
+        for k in touching[1:]:
+            root[find(k)] = find(touching[0])
+        touches.append((e.id, touching[0]))
+    by_root: dict[int, list[str]] = {}
+    for eid, k in touches:
+        by_root.setdefault(find(k), []).append(eid)
+    return list(by_root.values()), blocked
+
+
+def _passable(ways: list[RoomEntrance], clearance: float) -> list[RoomEntrance]:
+    """The ways an agent can go through: at least 2 · clearance wide, or part of a longer gap (an
+    opening split into wall pieces at a neighbour's corner)."""
+    def ends(e: RoomEntrance) -> set[tuple[float, float]]:
+        return {(round(e.a[0], 4), round(e.a[1], 4)), (round(e.b[0], 4), round(e.b[1], 4))}
+
+    return [e for e in ways if e.width >= 2 * clearance - _TOL
+            or any(o is not e and ends(o) & ends(e) for o in ways)]
+
+
+def disconnected_entrances(
+    house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
+    objects: bool = True,
+) -> list[RoomCut]:
+    """Every room whose doors and openings the agent cannot walk between inside it: a strip the
+    agent cannot pass is not part of the walkable room, and (with ``objects``) the room's floor
+    objects stand in the way. A room with one entrance is cut only when that entrance is blocked
+    by its objects."""
+    c = radius + margin
+    reach = c + _DOORSTEP
+    polys = _room_polygons(house)
+    # where the agent's centre may stand in the room: the floor's free space (the doorways
+    # open, so an agent crossing a thin room from door to door facing it stays in it)
+    floor = free_space(house, c)
+    ways_by_room = room_entrances(house)
+    out = []
+    for rid, poly in polys.items():
+        ways = _passable(ways_by_room.get(rid, []), c)
+        if not ways:
+            continue
+        bare = floor.intersection(poly)
+        groups, blocked = _groups(bare, ways, reach)
+        furniture = False
+        if objects and not blocked and len(groups) <= 1:
+            items = floor_objects(house, rid)
+            if items:
+                space = bare.difference(shapely.union_all([o.buffer(c - _TOL) for o in items]))
+                groups, blocked = _groups(space, ways, reach)
+                furniture = True
+        if len(ways) == 1 and not (furniture and blocked):
+            continue
+        if len(groups) > 1 or blocked:
+            out.append(RoomCut(rid, groups, blocked, furniture))
+    return out
+
+
+def blocked_entrances(
+    house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
+    start: Pt | None = None,
+) -> list[tuple[str, str]]:
+    """(room, entrance id) of every door or opening whose doorstep in that room the agent reached
+    from the spawn with the objects removed but no longer reaches with the floor objects in place
+    (the furniture shuts it off). Empty when the house has no usable spawn."""
+    if start is None:
+        pose = spawn_pose(house)
+        if pose is None:
+            return []
+        start = (pose.position.x, pose.position.z)
+    c = radius + margin
+    p = Point(start)
+
+    def reached(space: BaseGeometry) -> BaseGeometry | None:
+        parts = _parts(space)
+        if not parts:
+            return None
+        near = min(parts, key=lambda g: g.distance(p))
+        return near if near.distance(p) <= 0.5 else None
+
+    bare = reached(free_space(house, c))
+    full = reached(free_space(house, c, floor_objects(house)))
+    if bare is None:
+        return []
+    polys = _room_polygons(house)
+    out = []
+    for rid, ways in room_entrances(house).items():
+        poly = polys.get(rid)
+        if poly is None:
+            continue
+        for e in ways:
+            step = LineString([e.a, e.b]).buffer(c + _DOORSTEP).intersection(poly)
+            if bare.intersection(step).area <= _AREA:
+                continue
+            if full is None or full.intersection(step).area <= _AREA:
+                out.append((rid, e.id))
+    return out
