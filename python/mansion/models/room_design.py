@@ -52,6 +52,7 @@ import re
 from dataclasses import dataclass
 
 __all__ = [
+    "CORRIDOR_TYPES",
     "CORRIDOR_WIDTH",
     "DEFAULT_CORRIDOR_WIDTH",
     "DEFAULT_DESIGN",
@@ -174,15 +175,15 @@ ROOM_DESIGN: dict[str, RoomDesign] = {
     "computer_lab": _room(35.0, 4.8, 2.2, corridor=True, daylight=True),
     "art_room": _room(40.0, 5.4, 2.2, corridor=True, daylight=True),
     "music_room": _room(35.0, 4.8, 2.2, corridor=True, daylight=True),
-    "gym": _room(60.0, 7.0, 2.5, corridor=True),
-    "assembly_hall": _room(70.0, 7.0, 2.5, corridor=True),
+    "gym": _room(60.0, 6.0, 2.5, corridor=True),
+    "assembly_hall": _room(70.0, 6.0, 2.5, corridor=True),
     "canteen": _room(50.0, 5.4, 2.8, corridor=True, daylight=True),
     "group_room": _room(30.0, 4.5, 2.2, corridor=True, daylight=True),
     "sleep_room": _room(18.0, 3.6, 2.5, corridor=True),
     "play_hall": _room(30.0, 4.5, 3.0, daylight=True),
     "cloakroom": _room(5.0, 1.8, 3.0),
     # retail and food (Metric Handbook)
-    "sales_floor": _room(100.0, 8.0, 3.0),
+    "sales_floor": _room(100.0, 6.0, 3.0),
     "checkout_area": _room(15.0, 3.0, 4.0),
     "produce_section": _room(30.0, 5.0, 3.0),
     "cold_storage": _room(5.0, 1.8, 3.0, corridor=True),
@@ -192,10 +193,10 @@ ROOM_DESIGN: dict[str, RoomDesign] = {
     "bakery": _room(12.0, 3.0, 3.0),
     "butcher_counter": _room(9.0, 2.5, 3.0),
     "shop": _room(20.0, 3.6, 3.0, corridor=True),
-    "anchor_store": _room(80.0, 8.0, 3.0, corridor=True),
-    "food_court": _room(50.0, 6.0, 3.0),
+    "anchor_store": _room(80.0, 6.0, 3.0, corridor=True),
+    "food_court": _room(50.0, 5.0, 3.0),
     "loading_dock": _room(20.0, 3.6, 3.0),
-    "cinema": _room(60.0, 7.0, 2.0, corridor=True),
+    "cinema": _room(60.0, 6.0, 2.0, corridor=True),
     "dining_hall": _room(40.0, 5.0, 3.0, daylight=True),
     "private_dining_room": _room(12.0, 3.0, 2.5, corridor=True, daylight=True),
     "bar": _room(12.0, 3.0, 3.0),
@@ -223,7 +224,7 @@ ROOM_DESIGN: dict[str, RoomDesign] = {
     "lounge": _room(25.0, 4.0, 3.0, daylight=True),
     "luggage_room": _room(4.0, 1.8, 3.0),
     "spa": _room(30.0, 4.5, 2.5, corridor=True),
-    "pool_hall": _room(80.0, 8.0, 2.5, corridor=True),
+    "pool_hall": _room(80.0, 6.0, 2.5, corridor=True),
 }
 
 #: A room type the table does not know: a small general-purpose room.
@@ -248,6 +249,11 @@ CORRIDOR_WIDTH: dict[str, float] = {
 }
 #: A building type not in :data:`CORRIDOR_WIDTH` (a public building in general).
 DEFAULT_CORRIDOR_WIDTH = 1.5
+#: Room types that are corridors: they take the building type's corridor width (a lobby or an
+#: atrium is circulation too, but has widths of its own).
+CORRIDOR_TYPES: frozenset[str] = frozenset(
+    {"corridor", "ward_corridor", "hallway", "landing", "entrance_hall", "back_of_house"}
+)
 
 #: Other names of table entries (after normalisation).
 _ALIASES: dict[str, str] = {
