@@ -535,6 +535,13 @@ def _circulation(program_rooms: list[ProgramRoom]) -> float:
     return sum(r.area for i, r in enumerate(program_rooms) if i == 0 or room_kind(r.room_type).role == "circulation" and r.notes.startswith("sub-hub"))
 
 
+def _fit_bay(rooms: list[tuple[str, float]]) -> list[float]:
+    """Areas of a bay's rooms with each at its minimum where the bay's area allows
+    (:func:`fit_minimums` within the bay's total; nothing is dropped from a bay)."""
+    _, areas, _ = fit_minimums(rooms, sum(a for _, a in rooms), [])
+    return areas
+
+
 def _bay_floor(
     plan: BayPlan, role: str, rules_extra: list[Rm], n_bays: int, bay_area: float,
     services_area: float, hub_area: float, rng: random.Random,
@@ -557,16 +564,19 @@ def _bay_floor(
             own += [(r.room_type, r.area or room_kind(r.room_type).area)] * r.count
         hub_share = 0.12 if room_kind(use.hub).role == "circulation" else 0.4
         scale = bay_area * (1 - hub_share) / sum(a for _, a in own)
-        # Rooms below their minimum take area from the bay's others, then from its sub-hub.
-        _, areas, missing = fit_minimums([(t, a * scale) for t, a in own], bay_area * (1 - hub_share), [])
-        zones[zid] = Zone(zid, use.hub, max(bay_area * hub_share - missing, min_target(use.hub)))
+        # Rooms (the sub-hub too) below their minimum take area from the bay's others; the bay
+        # keeps its area, so its walls still stand on the floor below's.
+        sub_hub, *areas = _fit_bay([(use.hub, bay_area * hub_share), *((t, a * scale) for t, a in own)])
+        zones[zid] = Zone(zid, use.hub, sub_hub)
         rooms += [(t, a, zid) for (t, _), a in zip(own, areas)]
     if plan.services is not None:
         zid = f"bay_{n_bays + 1}"
         own = [(r.room_type, r.area or room_kind(r.room_type).area) for r in plan.services.rooms]
         scale = services_area * 0.8 / sum(a for _, a in own)
-        _, areas, missing = fit_minimums([(t, a * scale) for t, a in own], services_area * 0.8, [])
-        zones[zid] = Zone(zid, plan.services.hub, max(services_area * 0.2 - missing, min_target(plan.services.hub)))
+        sub_hub, *areas = _fit_bay(
+            [(plan.services.hub, services_area * 0.2), *((t, a * scale) for t, a in own)]
+        )
+        zones[zid] = Zone(zid, plan.services.hub, sub_hub)
         rooms += [(t, a, zid) for (t, _), a in zip(own, areas)]
     # Rooms asked for that found no general bay on this floor still go somewhere: the first bay.
     for r in extras:
