@@ -216,6 +216,9 @@ def eval_realism(
         Optional[Path], typer.Option("--reference", help="T2D plans folder to measure beside (DIR/plans/<id>.json).")
     ] = None,
     json_out: Annotated[Optional[Path], typer.Option("--json", help="Write the figures as JSON.")] = None,
+    narrow: Annotated[
+        float, typer.Option(min=0.1, help="Sliver width and usable square side, metres.")
+    ] = 1.0,
 ) -> None:
     """Room realism: slivers, elongated and unusable rooms, rooms below their type's minimum area
     or width, corridor widths and rooms without a corridor door, per building type and overall,
@@ -231,7 +234,7 @@ def eval_realism(
         with _progress(console) as bar:
             task = bar.add_task("buildings", total=(len(buildings or []) + generate) or None)
             report = evaluate_realism(
-                buildings or [], generate=generate, seed=seed, reference=reference,
+                buildings or [], generate=generate, seed=seed, reference=reference, narrow=narrow,
                 progress=lambda done: bar.update(task, completed=done),
             )
         if json_out is not None:
@@ -241,7 +244,10 @@ def eval_realism(
     except OSError as exc:
         raise _fail(f"cannot write output: {exc.strerror or exc}") from None
 
-    table = Table(title="Room realism (% of rooms; elongated: of non-circulation rooms)")
+    table = Table(
+        title=f"Room realism (% of rooms; sliver and square: {narrow:g} m; elongated: of "
+        "non-circulation rooms; no corridor door: of rooms that need one)"
+    )
     for col in (
         "group", "bldgs", "rooms", "sliver", "elongated", "no 1 m sq", "< min area", "< min width",
         "no corr. door", "corridor m med/min",
