@@ -59,6 +59,15 @@ def test_a_half_metre_strip_is_all_sliver_and_unusable() -> None:
     assert clear_width(STRIP) == pytest.approx(0.5, abs=0.02)
 
 
+def test_a_strip_exactly_one_metre_wide_is_a_sliver_but_meets_a_one_metre_width() -> None:
+    strip = box(0, 0, 6, 1.0)
+    assert narrow_share(strip, 1.0, inclusive=True) == pytest.approx(1.0)
+    assert not fits_square(strip, 1.0, inclusive=True)
+    assert narrow_share(strip, 1.0) == pytest.approx(0.0, abs=1e-9)
+    assert fits_square(strip, 1.0)
+    assert summarise([RoomRecord("office", "storage", strip)]).sliver == 1
+
+
 def test_a_square_has_no_narrow_part() -> None:
     assert narrow_share(SQUARE, 1.0) == pytest.approx(0.0, abs=1e-9)
     assert fits_square(SQUARE, 1.0) and fits_square(SQUARE, 3.0) and not fits_square(SQUARE, 3.1)
@@ -78,16 +87,16 @@ def test_summarise_counts_each_measure() -> None:
         RoomRecord("hotel", "storage", STRIP),  # sliver, elongated, no square, too thin
         RoomRecord("hotel", "bedroom", box(0, 0, 3, 4), corridor_access=False),  # fine, no door
         RoomRecord("hotel", "bedroom", box(0, 0, 2, 2), corridor_access=True),  # below 7.5 m²
-        RoomRecord("hotel", "corridor", box(0, 0, 12, 1.0)),  # circulation: narrower than 1.5 m
+        RoomRecord("hotel", "corridor", box(0, 0, 12, 1.2)),  # circulation: narrower than 1.5 m
     ]
     f = summarise(rooms, buildings=1)
     assert (f.rooms, f.sliver, f.no_square) == (4, 1, 1)
     assert (f.elongated, f.elongated_of) == (1, 3)  # the corridor is not counted as elongated
     assert f.below_area == 1  # the small bedroom (the 5 m² strip has a storeroom's area)
-    assert f.below_width == 3  # the strip, the 2 m wide bedroom, the 1 m corridor
+    assert f.below_width == 3  # the strip, the 2 m wide bedroom, the 1.2 m corridor
     assert f.corridor_door_of == 2 and f.no_corridor_door == 1
     assert f.corridors.count == 1 and f.corridors.below_required == 1
-    assert f.corridors.median == pytest.approx(1.0, abs=0.02)
+    assert f.corridors.median == pytest.approx(1.2, abs=0.02)
     assert f.sliver_types == {"storage": 1}
     assert f.sliver_pct == pytest.approx(25.0)
 

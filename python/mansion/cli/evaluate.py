@@ -217,7 +217,7 @@ def eval_realism(
     ] = None,
     json_out: Annotated[Optional[Path], typer.Option("--json", help="Write the figures as JSON.")] = None,
     narrow: Annotated[
-        float, typer.Option(min=0.1, help="Sliver width and usable square side, metres.")
+        float, typer.Option(min=0.1, help="Sliver width and usable square side, metres (parts this wide or narrower are slivers).")
     ] = 1.0,
 ) -> None:
     """Room realism: slivers, elongated and unusable rooms, rooms below their type's minimum area

@@ -3,13 +3,12 @@
 The same measures, from each room's polygon in metres, for generated buildings and for real plans
 (T2D / RPLAN), so the two can stand side by side:
 
-- **sliver**: more than 10 % of the room's area lies in parts narrower than 1.0 m (what a
-  morphological opening with a 1 m square removes). Widths are compared to within 1 mm: a part
-  exactly 1.0 m wide (two 0.5 m solver cells) is not narrower than 1.0 m. ``narrow`` sets
-  another width (``--narrow 1.01`` counts those 1.0 m parts as slivers too);
+- **sliver**: more than 10 % of the room's area lies in parts 1.0 m wide or narrower (what a
+  morphological opening with a square a hair over 1 m removes): a strip two 0.5 m solver cells
+  wide is a sliver, as it is in the issue's baseline (which these figures reproduce);
 - **elongated**: the room's bounding box is more than 3× longer than wide (circulation —
   corridors, halls, lobbies, balconies — is long by nature and excluded);
-- **no square**: no 1 m × 1 m square fits anywhere in the room (it cannot be used);
+- **no square**: no square a hair over 1 m × 1 m fits anywhere in the room (it cannot be used);
 - **below area / below width**: the room is smaller than its type's minimum area, or more than
   10 % of it is narrower than its type's minimum clear width (:mod:`mansion.models.room_design`);
 - **no corridor door**: a room the table wants on a corridor has no access to circulation (a
@@ -102,23 +101,32 @@ def bench_case(seed: int) -> tuple[str, int, str]:
 # -- measures on one polygon ---------------------------------------------------------------------
 
 
-def _opening(shape: BaseGeometry, width: float) -> BaseGeometry:
+def _half(width: float, inclusive: bool) -> float:
+    """Half of ``width``, a millimetre over when parts exactly ``width`` wide count as narrow
+    (``inclusive``), a millimetre under when they do not."""
+    return width / 2 + (_EPS if inclusive else -_EPS)
+
+
+def _opening(shape: BaseGeometry, width: float, inclusive: bool = False) -> BaseGeometry:
     """Morphological opening with a ``width`` square: what of ``shape`` a square of that side,
     moved around inside it, can cover (mitred buffers keep orthogonal corners square)."""
-    r = width / 2 - _EPS
+    r = _half(width, inclusive)
     return shape.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
 
 
-def narrow_share(shape: BaseGeometry, width: float) -> float:
-    """Share of ``shape``'s area in parts narrower than ``width`` (0 for an empty shape)."""
+def narrow_share(shape: BaseGeometry, width: float, inclusive: bool = False) -> float:
+    """Share of ``shape``'s area in parts narrower than ``width`` (``inclusive``: or exactly
+    that wide); 0 for an empty shape."""
     if shape.area <= 0:
         return 0.0
-    return max(0.0, 1.0 - _opening(shape, width).intersection(shape).area / shape.area)
+    kept = _opening(shape, width, inclusive).intersection(shape).area
+    return max(0.0, 1.0 - kept / shape.area)
 
 
-def fits_square(shape: BaseGeometry, side: float) -> bool:
-    """True when a ``side`` × ``side`` axis-aligned square fits inside ``shape``."""
-    return not shape.buffer(-(side / 2 - _EPS), join_style="mitre").is_empty
+def fits_square(shape: BaseGeometry, side: float, inclusive: bool = False) -> bool:
+    """True when a ``side`` × ``side`` axis-aligned square (``inclusive``: a hair larger) fits
+    inside ``shape``."""
+    return not shape.buffer(-_half(side, inclusive), join_style="mitre").is_empty
 
 
 def box_aspect(shape: BaseGeometry) -> float:
@@ -277,13 +285,13 @@ def summarise(rooms: Iterable[RoomRecord], buildings: int = 0, narrow: float = N
         key = design_key(r.room_type) or r.room_type
         shape = r.polygon
         f.rooms += 1
-        if narrow_share(shape, narrow) > TOLERANCE:
+        if narrow_share(shape, narrow, inclusive=True) > TOLERANCE:
             f.sliver += 1
             slivers[key] += 1
         if not d.circulation:
             f.elongated_of += 1
             f.elongated += box_aspect(shape) > MAX_BOX_ASPECT
-        if not fits_square(shape, narrow):
+        if not fits_square(shape, narrow, inclusive=True):
             f.no_square += 1
         need = corridor_width(r.building_type) if d.circulation and r.building_type != "t2d" else d.min_width
         small = shape.area < d.min_area - _EPS
