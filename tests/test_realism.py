@@ -25,6 +25,7 @@ from mansion.eval.realism import (
 from mansion.eval.t2d import T2DPlan, plans_folder
 from mansion.models.building import FloorProgram
 from mansion.models.room_design import (
+    CORRIDOR_TYPES,
     CORRIDOR_WIDTH,
     DEFAULT_DESIGN,
     ROOM_DESIGN,
@@ -33,6 +34,7 @@ from mansion.models.room_design import (
     room_design,
 )
 from mansion.planning.program import AREA_MARGIN, fit_minimums, min_target
+from mansion.planning.topology import MAX_NODE_WIDTH
 from mansion.planning.typologies import TYPOLOGIES
 from mansion.planning.vocabulary import ROOMS
 
@@ -173,6 +175,9 @@ def test_planned_rooms_respect_the_table(seed: int) -> None:
                 assert node.min_width is None
                 continue
             assert node.min_width is not None and 0 < node.min_width <= math.sqrt(node.area)
+            assert node.min_width <= min(MAX_NODE_WIDTH, room_design(node.room_type).min_width) or (
+                design_key(node.room_type) in CORRIDOR_TYPES
+            )
             if design_key(node.room_type) in ("corridor", "ward_corridor"):
                 assert node.min_width == pytest.approx(
                     min(corridor_width(kind), math.sqrt(node.area / 1.5)), abs=0.01

@@ -20,21 +20,27 @@ from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
 from mansion.planning.vocabulary import room_kind
 
-__all__ = ["floor_graph", "min_width", "with_min_widths"]
+__all__ = ["MAX_NODE_WIDTH", "floor_graph", "min_width", "with_min_widths"]
 
 #: A room's minimum width never asks for a squarer room than this (width² · aspect ≤ area), so a
 #: room squeezed to its minimum area can still be laid out.
 _MIN_ASPECT = 1.5
+#: The widest clear width a node asks of the solver (a bedroom's); wider rooms (classrooms 5.4 m)
+#: keep their shape through their area and the solver's compactness. Measured with the solver's
+#: per-room width rules (issue 14, offline hundred): asking the table's full widths made half the
+#: floors fail four attempts and drop every width rule (slivers 18.1 %, 526 s); capped at 3 m,
+#: 12.3 % and 301 s.
+MAX_NODE_WIDTH = 3.0
 
 
 def min_width(room_type: str, area: float, building_type: str | None) -> float:
     """The minimum clear width (m) of a room of ``room_type`` and ``area`` m² in a building of
     ``building_type``: the table's, a corridor's the building type's, never more than a room of
-    this area can have."""
+    this area can have nor more than :data:`MAX_NODE_WIDTH`."""
     width = room_design(room_type).min_width
     if design_key(room_type) in CORRIDOR_TYPES:
         width = max(width, corridor_width(building_type))
-    return round(min(width, math.sqrt(area / _MIN_ASPECT)), 2)
+    return round(min(width, MAX_NODE_WIDTH, math.sqrt(area / _MIN_ASPECT)), 2)
 
 
 def with_min_widths(graph: RoomGraph, building_type: str | None) -> RoomGraph:
