@@ -53,6 +53,7 @@ def make_plan(seed: int) -> dict[str, Any]:
     label64 = np.zeros((64, 64), dtype=np.int32)
     rooms = []
     for k, t in enumerate(types):
+        a, b, c, d = boxes[k]
         rows, cols = np.nonzero(rooms_map == k)
         label64[rows, cols] = CLASSES.index(t)
         rooms.append(
@@ -63,7 +64,8 @@ def make_plan(seed: int) -> dict[str, Any]:
                 "area_px": int(16 * rows.size),
                 "centroid": [float(4 * (cols.mean() + 0.5)), float(4 * (rows.mean() + 0.5))],
                 "bbox": [int(4 * cols.min()), int(4 * rows.min()), int(4 * cols.max() + 4), int(4 * rows.max() + 4)],
-                "polygon": [],
+                # the room's box as a pixel outline (x right, y down)
+                "polygon": [[4 * b, 4 * a], [4 * d, 4 * a], [4 * d, 4 * c], [4 * b, 4 * c]],
             }
         )
     adjacency = set()

@@ -81,9 +81,16 @@ def test_hospital_wards_off_a_corridor_and_toilets_on_every_floor() -> None:
     for f in b.floors:
         assert _types(b, f.index)["toilet"] >= 1
     upper = b.floors[1].graph
-    for ward in (n for n in upper.nodes if n.room_type == "ward"):
-        parents = [upper.node(x).room_type for x in upper.neighbours(ward.id)]
-        assert parents and all(p in ("ward_corridor", "corridor") for p in parents)
+    wards = [n for n in upper.nodes if n.room_type == "ward"]
+    assert wards
+    for ward in wards:
+        # A ward opens on a corridor and has its own bathroom, entered from the ward only.
+        around = [upper.node(x).room_type for x in upper.neighbours(ward.id)]
+        assert any(t in ("ward_corridor", "corridor") for t in around)
+        assert around.count("ensuite") == 1
+        assert set(around) <= {"ward_corridor", "corridor", "ensuite"}
+    for bath in (n for n in upper.nodes if n.room_type == "ensuite"):
+        assert [upper.node(x).room_type for x in upper.neighbours(bath.id)] == ["ward"]
 
 
 def test_school_toilets_on_every_floor() -> None:

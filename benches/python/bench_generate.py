@@ -19,23 +19,16 @@ import sys
 import time
 
 from mansion.building import generate_building
+from mansion.eval.realism import BENCH_TYPES as TYPES, bench_case
 from mansion.exceptions import MansionError
-from mansion.planning.program import typology
 
-#: Every building type the offline planner knows, in the order seeds cycle through them.
-TYPES = (
-    "studio", "family_apartment", "townhouse", "villa", "apartment_block", "office", "hospital",
-    "school", "kindergarten", "supermarket", "library", "restaurant", "hotel", "shopping_mall",
-)
+__all__ = ["TYPES", "case", "description"]
 
 
 def case(seed: int) -> tuple[str, int]:
-    """(building type, floors) of benchmark seed ``seed``: types in turn, floors spread 1–10 but
-    kept to what the type can be (a studio has one floor, a townhouse at most three)."""
-    kind = TYPES[seed % len(TYPES)]
-    lo, hi = typology(kind).floors
-    wanted = 1 + (seed * 7) % 10
-    return kind, min(max(wanted, lo), max(hi, min(wanted, 10 if hi >= 4 else hi)))
+    """(building type, floors) of benchmark seed ``seed`` (see :func:`bench_case`)."""
+    kind, floors, _ = bench_case(seed)
+    return kind, floors
 
 
 def description(kind: str, floors: int) -> str:

@@ -306,7 +306,7 @@ def solve_building_floor(
     return Floor(
         index=index, graph=graph, footprint=fp, layout=layout,
         room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
-        relaxations=relax,
+        relaxations=[*floor_program.relaxations, *relax],
         carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
     )
 

@@ -201,3 +201,78 @@ def eval_placement(
     if json_out is not None:
         atomic_write_text(json_out, json.dumps({"rooms": rooms}, indent=2) + "\n")
         console.print(f"Wrote {escape(str(json_out))}")
+
+
+@eval_app.command("realism")
+def eval_realism(
+    buildings: Annotated[
+        Optional[list[Path]], typer.Argument(help="Building folders (with building.json) or files.")
+    ] = None,
+    generate: Annotated[
+        int, typer.Option("--generate", min=0, help="Also generate N offline buildings (the benchmark's seeds).")
+    ] = 0,
+    seed: Annotated[int, typer.Option(help="First benchmark seed of --generate.")] = 0,
+    reference: Annotated[
+        Optional[Path], typer.Option("--reference", help="T2D plans folder to measure beside (DIR/plans/<id>.json).")
+    ] = None,
+    json_out: Annotated[Optional[Path], typer.Option("--json", help="Write the figures as JSON.")] = None,
+    narrow: Annotated[
+        float, typer.Option(min=0.1, help="Sliver width and usable square side, metres (parts this wide or narrower are slivers).")
+    ] = 1.0,
+) -> None:
+    """Room realism: slivers, elongated and unusable rooms, rooms below their type's minimum area
+    or width, corridor widths and rooms without a corridor door, per building type and overall,
+    beside real plans' figures."""
+    from rich.table import Table
+
+    from mansion.eval.realism import Figures, evaluate_realism
+
+    console = Console()
+    # The table has ten columns: keep it readable when the output is piped (80 columns).
+    console = Console(width=max(console.width, 132))
+    try:
+        with _progress(console) as bar:
+            task = bar.add_task("buildings", total=(len(buildings or []) + generate) or None)
+            report = evaluate_realism(
+                buildings or [], generate=generate, seed=seed, reference=reference, narrow=narrow,
+                progress=lambda done: bar.update(task, completed=done),
+            )
+        if json_out is not None:
+            report.save(json_out)
+    except MansionError as exc:
+        raise _fail(str(exc)) from None
+    except OSError as exc:
+        raise _fail(f"cannot write output: {exc.strerror or exc}") from None
+
+    table = Table(
+        title=f"Room realism (% of rooms; sliver and square: {narrow:g} m; elongated: of "
+        "non-circulation rooms; no corridor door: of rooms that need one)"
+    )
+    for col in (
+        "group", "bldgs", "rooms", "sliver", "elongated", "no 1 m sq", "< min area", "< min width",
+        "no corr. door", "corridor m med/min",
+    ):
+        table.add_column(col, justify="left" if col == "group" else "right")
+
+    def row(name: str, f: Figures) -> None:
+        c = f.corridors
+        widths = f"{c.median:.2f} / {c.min:.2f}" if c.count else "-"
+        table.add_row(
+            name, str(f.buildings), str(f.rooms), f"{f.sliver_pct:.1f}", f"{f.elongated_pct:.1f}",
+            f"{f.no_square_pct:.1f}", f"{f.below_area_pct:.1f}", f"{f.below_width_pct:.1f}",
+            f"{f.no_corridor_door_pct:.1f}", widths,
+        )
+
+    for kind, figures in report.by_type.items():
+        row(kind, figures)
+    row("[bold]overall[/bold]", report.overall)
+    if report.reference is not None:
+        row(f"[bold]reference[/bold] ({report.reference_plans} plans)", report.reference)
+    console.print(table)
+    narrow = ", ".join(f"{k} {v}" for k, v in list(report.overall.sliver_types.items())[:10])
+    if narrow:
+        console.print(f"Sliver rooms by type: {escape(narrow)}", soft_wrap=True)
+    for failure in report.failures:
+        console.print(f"  failed {escape(failure)}", soft_wrap=True)
+    if json_out is not None:
+        console.print(f"Wrote {escape(str(json_out))}")

@@ -50,6 +50,7 @@ class ProgramRoom(BaseModel):
 
     ``room_type`` is the function ("classroom", "ward"); ``zone`` groups rooms that the topology
     puts off one sub-hub (a wing, a unit, a department), ``None`` for rooms off the floor's hub.
+    ``parent`` names the room this one is entered from instead (an ensuite from its guest room).
     """
 
     model_config = ConfigDict(allow_inf_nan=False)
@@ -58,6 +59,9 @@ class ProgramRoom(BaseModel):
     room_type: str = Field(min_length=1)
     area: float = Field(gt=0.0, description="Area estimate in m².")
     zone: str | None = None
+    parent: str | None = Field(
+        default=None, description="The room it is entered from (None: its zone's sub-hub or the hub)."
+    )
     floor_material: str = ""
     wall_material: str = ""
     notes: str = ""
@@ -76,6 +80,10 @@ class FloorProgram(BaseModel):
     rooms: list[ProgramRoom] = Field(min_length=1)
     reserve_ratio: float = Field(
         ge=0.0, le=1.0, description="Share of the free area left to circulation (hub, sub-hubs)."
+    )
+    relaxations: list[str] = Field(
+        default_factory=list,
+        description="What the planner gave up to fit the floor (rooms dropped at their minimum size).",
     )
 
 

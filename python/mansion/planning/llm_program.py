@@ -45,6 +45,7 @@ from mansion.planning.program import (
     ProgramOptions,
     connectivity,
     core_requests,
+    fit_minimums,
     min_arm,
     resolve_constraints,
     sample_outlines,
@@ -283,9 +284,20 @@ def _floor_program(f: FloorAnswer, frame: Frame, cores: list[BuildingCore]) -> t
             f"cores) is {free:.0f} m2; keep the sum between {AREA_FLOOR * free:.0f} and {free:.0f} m2"
         )
     scale = free / total
+    # No room below its type's minimum area (the room design table): the difference comes from
+    # the rooms above theirs; a program that cannot hold its rooms at their minimum goes back.
+    types = [_snake(r.function) for r in rooms]
+    _, areas, missing = fit_minimums(
+        [(t, r.area_estimate * scale) for t, r in zip(types, rooms)], free, []
+    )
+    if missing > 0:
+        return None, (
+            f"floor {f.index}: at their minimum areas the rooms need {missing:.0f} m2 more than the "
+            f"free area of {free:.0f} m2; drop, merge or move rooms to another floor"
+        )
     program_rooms = [
         ProgramRoom(
-            id=r.id, room_type=_snake(r.function), area=round(r.area_estimate * scale, 2),
+            id=r.id, room_type=_snake(r.function), area=round(areas[i], 2),
             zone=r.zone or None, floor_material=r.floor_material, wall_material=r.wall_material,
             notes=r.notes if i else (r.notes or "circulation hub"),
         )

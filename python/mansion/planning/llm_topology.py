@@ -24,6 +24,7 @@ from mansion.exceptions import InvalidInputError
 from mansion.models._validation import describe_validation_error
 from mansion.models.building import BuildingProgram, FloorProgram
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
+from mansion.planning.topology import with_min_widths
 
 __all__ = ["TopologyAnswer", "graph_from_answer", "prompt_values"]
 
@@ -174,4 +175,4 @@ def graph_from_answer(answer: TopologyAnswer, program: BuildingProgram, index: i
             [f"rooms {lost} are not reached from the hub {graph.hub.id!r} through access edges "
              "(a stair or elevator cannot be passed through on one floor)"]
         )
-    return graph
+    return with_min_widths(graph, program.building_type)

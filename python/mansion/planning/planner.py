@@ -111,7 +111,7 @@ class OfflinePlanner:
         if typ is not None and index > 0:
             template = typ.top if index == program.floor_count - 1 and typ.top else typ.upper
             adjacent = template.adjacent if template is not None else typ.ground.adjacent
-        return floor_graph(floor, program.cores, adjacent)
+        return floor_graph(floor, program.cores, adjacent, program.building_type)
 
 
 def _anthropic() -> BuildingPlanner:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import random
 from collections import Counter
+from collections.abc import Callable
 
 from shapely.geometry import Polygon
 
@@ -30,15 +31,19 @@ from mansion.planning.description import Placement, Request
 from mansion.planning.footprints import Outline, stack_outlines
 from mansion.planning.palette import room_materials
 from mansion.planning.typologies import TYPOLOGIES, FloorTemplate, Rm, Typology, Zone
+from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
 from mansion.planning.vocabulary import room_kind
 
 __all__ = [
+    "AREA_MARGIN",
     "DEFAULT_MAX_FLOOR_AREA",
     "MAX_FLOORS",
     "ProgramOptions",
     "plan_program",
     "connectivity",
     "core_requests",
+    "fit_minimums",
+    "min_target",
     "min_arm",
     "resolve_constraints",
     "sample_outlines",
@@ -51,6 +56,72 @@ DEFAULT_MAX_FLOOR_AREA = 500.0
 MAX_ZONE_ROOMS = 6
 #: Rooms (zones and cores included) the floor's hub may serve directly.
 MAX_HUB_CHILDREN = 9
+#: Target areas stay this far above their type's minimum (the room design table), so the
+#: solver's area error (17 % on average over the offline hundred) does not take a room below it.
+AREA_MARGIN = 1.2
+#: The bathroom a guest room or a ward has of its own (the table's ``own_bathroom``), and the
+#: share of the pair's area it takes.
+ENSUITE = "ensuite"
+ENSUITE_SHARE = 0.18
+
+
+def min_target(room_type: str) -> float:
+    """The smallest target area (m²) a room of ``room_type`` may be given: its minimum area
+    (with its own bathroom's, if it has one) and the margin for the solver's error."""
+    design = room_design(room_type)
+    own = room_design(ENSUITE).min_area if design.own_bathroom else 0.0
+    return AREA_MARGIN * (design.min_area + own)
+
+
+def fit_minimums(
+    rooms: list[tuple[str, float]], budget: float, drop_order: list[int]
+) -> tuple[list[int], list[float], float]:
+    """Give every room at least :func:`min_target`, within ``budget`` m².
+
+    Rooms below their minimum are raised; the area comes from the rooms above theirs, in
+    proportion to what they have above it. While that is not enough, the rooms of
+    ``drop_order`` (indices into ``rooms``) go, in that order. No room is ever shrunk below its
+    minimum. Returns (indices of the rooms kept, their areas, area still missing).
+    """
+    keep = list(range(len(rooms)))
+    order = list(drop_order)
+    while True:
+        floor = {i: min_target(rooms[i][0]) for i in keep}
+        now = {i: max(rooms[i][1], floor[i]) for i in keep}
+        excess = sum(now.values()) - budget
+        if excess <= 1e-9:
+            return keep, [now[i] for i in keep], 0.0
+        slack = sum(now[i] - floor[i] for i in keep)
+        if excess <= slack:
+            f = excess / slack
+            return keep, [now[i] - (now[i] - floor[i]) * f for i in keep], 0.0
+        if not order:
+            return keep, [floor[i] for i in keep], excess - slack
+        keep.remove(order.pop(0))
+
+
+def _dropped(types: list[str], keep: list[int]) -> list[str]:
+    """Relaxation notes for the rooms ``fit_minimums`` dropped."""
+    gone = Counter(t for i, t in enumerate(types) if i not in set(keep))
+    return [
+        f"dropped {n} {t.replace('_', ' ')}{'s' if n > 1 else ''}: the floor cannot hold "
+        f"{'them' if n > 1 else 'it'} at the minimum area"
+        for t, n in gone.items()
+    ]
+
+
+def _frontage(area: float) -> float:
+    """The length of corridor a room of ``area`` m² takes: its side on the corridor (rooms
+    about square), halved because a corridor serves rooms on both sides."""
+    return math.sqrt(max(area, 0.0)) / 2
+
+
+def planned_corridor(building_type: str, served: list[float], cores: int = 0) -> float:
+    """The area (m²) of a corridor serving rooms of ``served`` m² and ``cores`` cores: its
+    length (the rooms' frontages, rooms on both sides, 3 m beside each core) times the
+    building type's corridor width."""
+    length = sum(_frontage(a) for a in served) + 1.5 * cores
+    return corridor_width(building_type) * max(length, 2.0)
 
 
 def typology(key: str) -> Typology:
@@ -200,9 +271,16 @@ def _room_ids(rooms: list[tuple[str, float, str | None]]) -> list[str]:
 
 
 def _generic_rooms(
-    template: FloorTemplate, rules: list[Rm], free: float, reserve: float, where: str
-) -> tuple[str, float, list[tuple[str, float, str | None]], dict[str, Zone]]:
-    """Hub type and area, rooms (type, area, zone) and zones of a template floor of ``free`` m²."""
+    template: FloorTemplate, rules: list[Rm], free: float, reserve: float, where: str,
+    building_type: str = "", cores: int = 0,
+) -> tuple[str, float, list[tuple[str, float, str | None]], dict[str, Zone], list[str]]:
+    """Hub type and area, rooms (type, area, zone), zones and relaxations of a template floor of
+    ``free`` m².
+
+    Rooms are sized from the vocabulary's usual areas and scaled to the floor; corridors (the hub
+    and the zones' sub-hubs, when they are corridors) are then planned as their length times the
+    building type's corridor width, the rooms taking what they leave; last, every room is kept at
+    its minimum (:func:`fit_minimums`), optional and extra fill rooms dropping first."""
     zones = {z.id: z for z in template.zones}
     hub_kind = room_kind(template.hub)
     circulation_hub = hub_kind.role == "circulation"
@@ -256,21 +334,96 @@ def _generic_rooms(
         zid: z if room_kind(z.hub).role == "circulation" else Zone(z.id, z.hub, zone_hub_area(z) * scale)
         for zid, z in zones.items()
     }
-    rooms = [
-        (r.room_type, (r.area or room_kind(r.room_type).area) * scale, r.zone)
-        for r in active
-        for _ in range(counts[id(r)])
+    expanded = [(r, k) for r in active for k in range(counts[id(r)])]
+    rooms = [(r.room_type, (r.area or room_kind(r.room_type).area) * scale, r.zone) for r, _ in expanded]
+    hub_area, rooms, zones = _plan_corridors(
+        template.hub, hub_area, rooms, zones, building_type, cores
+    )
+    # Dropped first when the floor cannot hold every room at its minimum: optional rooms, then
+    # the fill rooms beyond their count, last listed first.
+    order = [i for i in reversed(range(len(expanded))) if expanded[i][0].optional]
+    order += [
+        i for i in reversed(range(len(expanded)))
+        if expanded[i][0].fill and expanded[i][1] >= expanded[i][0].count
     ]
-    return template.hub, hub_area, rooms, zones
+    keep, areas, missing = fit_minimums(
+        [(t, a) for t, a, _ in rooms], sum(a for _, a, _ in rooms), order
+    )
+    relaxations = _dropped([t for t, _, _ in rooms], keep)
+    rooms = [(rooms[i][0], a, rooms[i][2]) for i, a in zip(keep, areas)]
+    zones = {
+        zid: z if z.hub_area is None or z.hub_area >= min_target(z.hub) else Zone(z.id, z.hub, min_target(z.hub))
+        for zid, z in zones.items()
+    }
+    if missing > 0:
+        # Rooms that must stay (the template's and the description's) take it from the hub.
+        if hub_area - missing < min_target(template.hub):
+            raise PlannerError(
+                f"{where}: {free:.0f} m² of free area cannot hold its rooms at their minimum "
+                f"areas ({missing:.0f} m² short); give a larger area or fewer rooms"
+            )
+        hub_area -= missing
+        relaxations.append(f"the {template.hub.replace('_', ' ')} gave {missing:.0f} m² to rooms at their minimum")
+    return template.hub, hub_area, rooms, zones, relaxations
+
+
+def _is_corridor(room_type: str) -> bool:
+    return design_key(room_type) in CORRIDOR_TYPES
+
+
+def _plan_corridors(
+    hub: str,
+    hub_area: float,
+    rooms: list[tuple[str, float, str | None]],
+    zones: dict[str, Zone],
+    building_type: str,
+    cores: int,
+) -> tuple[float, list[tuple[str, float, str | None]], dict[str, Zone]]:
+    """Corridors sized as length × width (:func:`planned_corridor`) instead of what is left over;
+    the area they free or take is shared by the rooms (room-like sub-hubs included) in proportion."""
+    if not building_type:
+        return hub_area, rooms, zones
+    new_zones = dict(zones)
+    delta = 0.0
+    for zid, z in zones.items():
+        served = [a for _, a, zz in rooms if zz == zid]
+        if served and _is_corridor(z.hub) and z.hub_area is not None:
+            area = planned_corridor(building_type, served)
+            new_zones[zid] = Zone(z.id, z.hub, area)
+            delta += z.hub_area - area
+    if _is_corridor(hub):
+        used = {zz for _, _, zz in rooms if zz is not None}
+        served = [a for _, a, zz in rooms if zz is None]
+        # A sub-hub meets the hub along about 3 m, as a 9 m² room would.
+        served += [9.0 if _is_corridor(new_zones[z].hub) else (new_zones[z].hub_area or 9.0) for z in used]
+        area = planned_corridor(building_type, served, cores)
+        delta += hub_area - area
+        hub_area = area
+    total = sum(a for _, a, _ in rooms) + sum(
+        z.hub_area or 0.0 for z in new_zones.values() if not _is_corridor(z.hub)
+        and room_kind(z.hub).role != "circulation"
+    )
+    if total <= 0 or abs(delta) < 1e-9:
+        return hub_area, rooms, new_zones
+    k = max(0.0, (total + delta) / total)
+    rooms = [(t, a * k, zz) for t, a, zz in rooms]
+    new_zones = {
+        zid: z if room_kind(z.hub).role == "circulation" or z.hub_area is None else Zone(z.id, z.hub, z.hub_area * k)
+        for zid, z in new_zones.items()
+    }
+    return hub_area, rooms, new_zones
 
 
 def _split_wings(
     hub_area: float,
     rooms: list[tuple[str, float, str | None]],
     zones: dict[str, Zone],
+    building_type: str = "",
 ) -> tuple[float, list[tuple[str, float, str | None]], dict[str, Zone]]:
     """Split zones with more than MAX_ZONE_ROOMS rooms into wings, and give a hub with too many
-    children corridor wings for its most repeated room type, so every cut round stays small."""
+    children corridor wings for its most repeated room type, so every cut round stays small.
+    With ``building_type`` given, a wing corridor is planned (:func:`planned_corridor`) for the
+    rooms it serves."""
     zones = dict(zones)
     out: list[tuple[str, float, str | None]] = []
     by_zone: dict[str, list[tuple[str, float, str | None]]] = {}
@@ -288,6 +441,8 @@ def _split_wings(
             direct = keep
             by_zone["wing"] = [(t, a, "wing") for t, a, _ in moved]
             share = min(0.35 * hub_area, 4.0 * len(moved))
+            if building_type:
+                share = min(0.5 * hub_area, planned_corridor(building_type, [a for _, a, _ in moved]))
             zones["wing"] = Zone("wing", "corridor", share)
             hub_area -= share
     for zid, zrooms in by_zone.items():
@@ -299,8 +454,12 @@ def _split_wings(
         hub = zone.hub_area if zone.hub_area is not None else room_kind(zone.hub).area
         del zones[zid]
         # Rooms of the commonest type spread over the wings; the others stay in the first wing.
+        wings = [[r for i, r in enumerate(zrooms) if i % n_wings == k] for k in range(n_wings)]
         for k in range(n_wings):
-            zones[f"{zid}_{k + 1}"] = Zone(f"{zid}_{k + 1}", zone.hub, max(hub / n_wings * 1.3, 6.0))
+            size = max(hub / n_wings * 1.3, 6.0)
+            if building_type and _is_corridor(zone.hub):
+                size = planned_corridor(building_type, [a for _, a, _ in wings[k]])
+            zones[f"{zid}_{k + 1}"] = Zone(f"{zid}_{k + 1}", zone.hub, size)
         for i, (t, a, _) in enumerate(zrooms):
             out.append((t, a, f"{zid}_{i % n_wings + 1}"))
     return hub_area, direct + out, zones
@@ -319,10 +478,13 @@ def _floor_program(
     circulation: float,
 ) -> FloorProgram:
     """Assemble the program: the hub first, then each zone's sub-hub followed by its rooms."""
-    def card(rid: str, room_type: str, area: float, zone: str | None, notes: str = "") -> ProgramRoom:
+    def card(
+        rid: str, room_type: str, area: float, zone: str | None, notes: str = "",
+        parent: str | None = None,
+    ) -> ProgramRoom:
         floor, wall = room_materials(palette, room_type)
         return ProgramRoom(
-            id=rid, room_type=room_type, area=round(area, 2), zone=zone,
+            id=rid, room_type=room_type, area=round(area, 2), zone=zone, parent=parent,
             floor_material=floor, wall_material=wall, notes=notes,
         )
 
@@ -341,6 +503,7 @@ def _floor_program(
         program.append(card(rid, zone.hub, zone_hub_area, zid, f"sub-hub of zone {zid}"))
         program += [card(i, t, a, z) for i, (t, a, z) in zip(ids, ordered) if z == zid]
     program[1:1] = [card(i, t, a, z) for i, (t, a, z) in zip(ids, ordered) if z is None]
+    program = _with_ensuites(program, card)
     gross = Polygon(*outline).area
     return FloorProgram(
         index=index, requirement=requirement, outline=outline[0], holes=outline[1],
@@ -348,8 +511,35 @@ def _floor_program(
     )
 
 
+def _with_ensuites(program: list[ProgramRoom], card: Callable[..., ProgramRoom]) -> list[ProgramRoom]:
+    """Every room the design table gives a bathroom of its own (a guest room, a ward) is split
+    into the room and its ensuite, entered from the room and listed right after it."""
+    out: list[ProgramRoom] = []
+    taken = {r.id for r in program}
+    for i, room in enumerate(program):
+        if i == 0 or not room_design(room.room_type).own_bathroom:
+            out.append(room)
+            continue
+        least = AREA_MARGIN * room_design(ENSUITE).min_area
+        bath = max(least, min(ENSUITE_SHARE * room.area, room.area - AREA_MARGIN * room_design(room.room_type).min_area))
+        rid = f"{room.id}_{ENSUITE}"
+        while rid in taken:
+            rid += "_"
+        taken.add(rid)
+        out.append(room.model_copy(update={"area": round(room.area - bath, 2)}))
+        out.append(card(rid, ENSUITE, bath, room.zone, f"ensuite of {room.id}", parent=room.id))
+    return out
+
+
 def _circulation(program_rooms: list[ProgramRoom]) -> float:
     return sum(r.area for i, r in enumerate(program_rooms) if i == 0 or room_kind(r.room_type).role == "circulation" and r.notes.startswith("sub-hub"))
+
+
+def _fit_bay(rooms: list[tuple[str, float]]) -> list[float]:
+    """Areas of a bay's rooms with each at its minimum where the bay's area allows
+    (:func:`fit_minimums` within the bay's total; nothing is dropped from a bay)."""
+    _, areas, _ = fit_minimums(rooms, sum(a for _, a in rooms), [])
+    return areas
 
 
 def _bay_floor(
@@ -374,14 +564,20 @@ def _bay_floor(
             own += [(r.room_type, r.area or room_kind(r.room_type).area)] * r.count
         hub_share = 0.12 if room_kind(use.hub).role == "circulation" else 0.4
         scale = bay_area * (1 - hub_share) / sum(a for _, a in own)
-        zones[zid] = Zone(zid, use.hub, bay_area * hub_share)
-        rooms += [(t, a * scale, zid) for t, a in own]
+        # Rooms (the sub-hub too) below their minimum take area from the bay's others; the bay
+        # keeps its area, so its walls still stand on the floor below's.
+        sub_hub, *areas = _fit_bay([(use.hub, bay_area * hub_share), *((t, a * scale) for t, a in own)])
+        zones[zid] = Zone(zid, use.hub, sub_hub)
+        rooms += [(t, a, zid) for (t, _), a in zip(own, areas)]
     if plan.services is not None:
         zid = f"bay_{n_bays + 1}"
         own = [(r.room_type, r.area or room_kind(r.room_type).area) for r in plan.services.rooms]
         scale = services_area * 0.8 / sum(a for _, a in own)
-        zones[zid] = Zone(zid, plan.services.hub, services_area * 0.2)
-        rooms += [(t, a * scale, zid) for t, a in own]
+        sub_hub, *areas = _fit_bay(
+            [(plan.services.hub, services_area * 0.2), *((t, a * scale) for t, a in own)]
+        )
+        zones[zid] = Zone(zid, plan.services.hub, sub_hub)
+        rooms += [(t, a, zid) for (t, _), a in zip(own, areas)]
     # Rooms asked for that found no general bay on this floor still go somewhere: the first bay.
     for r in extras:
         rooms += [(r.room_type, r.area or room_kind(r.room_type).area, "bay_1")] * r.count
@@ -469,17 +665,23 @@ def plan_program(
             hub, hub_area, rooms, zones = _bay_floor(
                 bay_plan, role, extras, n_bays, bay_area, bay_plan.services_area, free - used, rng
             )
+            relax = []
         else:
             template = _template(typ, role)
             rules = _apply_placements(list(template.rooms), request.placements, index, floors)
-            hub, hub_area, rooms, zones = _generic_rooms(template, rules, free, reserve, where)
-            hub_area, rooms, zones = _split_wings(hub_area, rooms, zones)
+            hub, hub_area, rooms, zones, relax = _generic_rooms(
+                template, rules, free, reserve, where, building_type, len(on_floor)
+            )
+            hub_area, rooms, zones = _split_wings(hub_area, rooms, zones, building_type)
         requirement = f"{role} floor of a {building_type.replace('_', ' ')}: {typ.description}"
         program = _floor_program(
             index, requirement, outline, hub, hub_area, rooms, zones, palette, free, 0.0
         )
         program = program.model_copy(
-            update={"reserve_ratio": round(min(1.0, _circulation(program.rooms) / free), 4)}
+            update={
+                "reserve_ratio": round(min(1.0, _circulation(program.rooms) / free), 4),
+                "relaxations": relax,
+            }
         )
         # Identical floors (same outline, same rooms) are written as the paper's copies.
         key = (tuple(map(tuple, outline[0])), tuple((r.id, r.room_type, r.area, r.zone) for r in program.rooms))

@@ -3,24 +3,62 @@
 The hub (the program's first room) is the ``main`` node; every core on the floor is a fixed node
 reached from the hub through a door; each zone's sub-hub is an ``area`` node reached from the hub,
 with the zone's rooms reached from it; the other rooms hang off the hub. Rooms whose type is open
-by nature (a kitchenette, a checkout area) open to their parent instead of a door. The typology's
-adjacencies ("kitchen beside the dining room") become ``adjacent`` edges where both rooms exist
-and no edge joins them yet.
+by nature (a kitchenette, a checkout area) open to their parent instead of a door; a room with a
+``parent`` (an ensuite) is reached from that room. The typology's adjacencies ("kitchen beside
+the dining room") become ``adjacent`` edges where both rooms exist and no edge joins them yet.
+
+Every node gets its minimum clear width from the room design table
+(:mod:`mansion.models.room_design`); corridors take the building type's corridor width.
 """
 
 from __future__ import annotations
 
+import math
+
 from mansion.models.building import BuildingCore, FloorProgram
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
+from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
 from mansion.planning.vocabulary import room_kind
 
-__all__ = ["floor_graph"]
+__all__ = ["MAX_NODE_WIDTH", "floor_graph", "min_width", "with_min_widths"]
+
+#: A room's minimum width never asks for a squarer room than this (width² · aspect ≤ area), so a
+#: room squeezed to its minimum area can still be laid out.
+_MIN_ASPECT = 1.5
+#: The widest clear width a node asks of the solver (a bedroom's); wider rooms (classrooms 5.4 m)
+#: keep their shape through their area and the solver's compactness. Measured with the solver's
+#: per-room width rules (issue 14, offline hundred): asking the table's full widths made half the
+#: floors fail four attempts and drop every width rule (slivers 18.1 %, 526 s); capped at 3 m,
+#: 12.3 % and 301 s.
+MAX_NODE_WIDTH = 3.0
+
+
+def min_width(room_type: str, area: float, building_type: str | None) -> float:
+    """The minimum clear width (m) of a room of ``room_type`` and ``area`` m² in a building of
+    ``building_type``: the table's, a corridor's the building type's, never more than a room of
+    this area can have nor more than :data:`MAX_NODE_WIDTH`."""
+    width = room_design(room_type).min_width
+    if design_key(room_type) in CORRIDOR_TYPES:
+        width = max(width, corridor_width(building_type))
+    return round(min(width, MAX_NODE_WIDTH, math.sqrt(area / _MIN_ASPECT)), 2)
+
+
+def with_min_widths(graph: RoomGraph, building_type: str | None) -> RoomGraph:
+    """``graph`` with :attr:`RoomNode.min_width` filled for every room that has none (cores
+    keep none: the footprint fixes them)."""
+    nodes = [
+        n if n.is_core or n.min_width is not None or n.area <= 0
+        else n.model_copy(update={"min_width": min_width(n.room_type, n.area, building_type)})
+        for n in graph.nodes
+    ]
+    return RoomGraph(nodes=nodes, edges=graph.edges)
 
 
 def floor_graph(
     program: FloorProgram,
     cores: list[BuildingCore],
     adjacent: tuple[tuple[str, str], ...] = (),
+    building_type: str | None = None,
 ) -> RoomGraph:
     """The room graph of ``program`` with the cores that serve its floor."""
     hub = program.rooms[0]
@@ -28,7 +66,7 @@ def floor_graph(
         RoomNode(
             id=hub.id, type="main", area=hub.area, room_type=hub.room_type,
             floor_material=hub.floor_material, wall_material=hub.wall_material,
-            open_relation="open",
+            open_relation="open", min_width=min_width(hub.room_type, hub.area, building_type),
         )
     ]
     edges: list[RoomEdge] = []
@@ -45,8 +83,10 @@ def floor_graph(
             edges.append(RoomEdge(source=hub.id, target=core.id, kind="access"))
     zone_hub: dict[str, str] = {}
     for room in program.rooms[1:]:
-        is_sub_hub = room.zone is not None and room.zone not in zone_hub
-        if is_sub_hub:
+        is_sub_hub = room.parent is None and room.zone is not None and room.zone not in zone_hub
+        if room.parent is not None:
+            parent = room.parent
+        elif is_sub_hub:
             assert room.zone is not None
             zone_hub[room.zone] = room.id
             parent = hub.id
@@ -58,6 +98,7 @@ def floor_graph(
                 room_type=room.room_type, floor_material=room.floor_material,
                 wall_material=room.wall_material,
                 open_relation="open" if room_kind(room.room_type).open else "door",
+                min_width=min_width(room.room_type, room.area, building_type),
             )
         )
         edges.append(RoomEdge(source=parent, target=room.id, kind="access"))

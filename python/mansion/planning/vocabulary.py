@@ -106,10 +106,10 @@ ROOMS: dict[str, RoomKind] = {
     "accessible_toilet": RoomKind(5, "wet"),
     "changing_room": RoomKind(12, "wet"),
     # health
-    "ward": RoomKind(20, "clinical"),
+    "ward": RoomKind(24, "clinical"),
     "nurse_station": RoomKind(12, "clinical", True),
     "pharmacy": RoomKind(22, "clinical"),
-    "consultation_room": RoomKind(14, "clinical"),
+    "consultation_room": RoomKind(16, "clinical"),
     "treatment_room": RoomKind(16, "clinical"),
     "triage": RoomKind(12, "clinical"),
     "emergency_room": RoomKind(30, "clinical"),

@@ -1,0 +1,244 @@
+"""The room design table, the planners' use of it, and ``mansion eval realism`` (issue 14)."""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+
+import pytest
+from shapely.geometry import Polygon, box
+from typer.testing import CliRunner
+
+from mansion.building import generate_building
+from mansion.cli import app
+from mansion.eval.realism import (
+    RoomRecord,
+    bench_case,
+    box_aspect,
+    clear_width,
+    fits_square,
+    narrow_share,
+    summarise,
+)
+from mansion.eval.t2d import T2DPlan, plans_folder
+from mansion.models.building import FloorProgram
+from mansion.models.room_design import (
+    CORRIDOR_TYPES,
+    CORRIDOR_WIDTH,
+    DEFAULT_DESIGN,
+    ROOM_DESIGN,
+    corridor_width,
+    design_key,
+    room_design,
+)
+from mansion.planning.program import AREA_MARGIN, fit_minimums, min_target
+from mansion.planning.topology import MAX_NODE_WIDTH
+from mansion.planning.typologies import TYPOLOGIES
+from mansion.planning.vocabulary import ROOMS
+
+sys.path.insert(0, str(Path(__file__).parent))
+from synthetic_plans import write_plans  # noqa: E402
+
+runner = CliRunner()
+
+STRIP = box(0, 0, 10, 0.5)  # a 0.5 m strip
+SQUARE = box(0, 0, 3, 3)
+#: An L: a 4 m square with a 0.5 m × 4 m arm: 2 m² of 18 m² are narrow (11 %).
+L_WITH_STRIP = Polygon([(0, 0), (8, 0), (8, 0.5), (4, 0.5), (4, 4), (0, 4)])
+#: An L of two 1.5 m wide arms: no part is narrower than 1 m.
+WIDE_L = Polygon([(0, 0), (6, 0), (6, 1.5), (1.5, 1.5), (1.5, 6), (0, 6)])
+
+
+# -- measures on hand-made polygons --------------------------------------------------------------
+
+
+def test_a_half_metre_strip_is_all_sliver_and_unusable() -> None:
+    assert narrow_share(STRIP, 1.0) == pytest.approx(1.0)
+    assert not fits_square(STRIP, 1.0)
+    assert box_aspect(STRIP) == pytest.approx(20.0)
+    assert clear_width(STRIP) == pytest.approx(0.5, abs=0.02)
+
+
+def test_a_strip_exactly_one_metre_wide_is_a_sliver_but_meets_a_one_metre_width() -> None:
+    strip = box(0, 0, 6, 1.0)
+    assert narrow_share(strip, 1.0, inclusive=True) == pytest.approx(1.0)
+    assert not fits_square(strip, 1.0, inclusive=True)
+    assert narrow_share(strip, 1.0) == pytest.approx(0.0, abs=1e-9)
+    assert fits_square(strip, 1.0)
+    assert summarise([RoomRecord("office", "storage", strip)]).sliver == 1
+
+
+def test_a_square_has_no_narrow_part() -> None:
+    assert narrow_share(SQUARE, 1.0) == pytest.approx(0.0, abs=1e-9)
+    assert fits_square(SQUARE, 1.0) and fits_square(SQUARE, 3.0) and not fits_square(SQUARE, 3.1)
+    assert box_aspect(SQUARE) == pytest.approx(1.0)
+
+
+def test_an_l_shape_narrow_part_is_measured() -> None:
+    assert L_WITH_STRIP.area == pytest.approx(18.0)
+    assert narrow_share(L_WITH_STRIP, 1.0) == pytest.approx(2.0 / 18.0, abs=1e-6)
+    assert narrow_share(WIDE_L, 1.0) == pytest.approx(0.0, abs=1e-9)
+    assert narrow_share(WIDE_L, 2.0) == pytest.approx(1.0)  # every arm is 1.5 m wide
+    assert clear_width(WIDE_L) == pytest.approx(1.5, abs=0.02)
+
+
+def test_summarise_counts_each_measure() -> None:
+    rooms = [
+        RoomRecord("hotel", "storage", STRIP),  # sliver, elongated, no square, too thin
+        RoomRecord("hotel", "bedroom", box(0, 0, 3, 4), corridor_access=False),  # fine, no door
+        RoomRecord("hotel", "bedroom", box(0, 0, 2, 2), corridor_access=True),  # below 7.5 m²
+        RoomRecord("hotel", "corridor", box(0, 0, 12, 1.2)),  # circulation: narrower than 1.5 m
+    ]
+    f = summarise(rooms, buildings=1)
+    assert (f.rooms, f.sliver, f.no_square) == (4, 1, 1)
+    assert (f.elongated, f.elongated_of) == (1, 3)  # the corridor is not counted as elongated
+    assert f.below_area == 1  # the small bedroom (the 5 m² strip has a storeroom's area)
+    assert f.below_width == 3  # the strip, the 2 m wide bedroom, the 1.2 m corridor
+    assert f.corridor_door_of == 2 and f.no_corridor_door == 1
+    assert f.corridors.count == 1 and f.corridors.below_required == 1
+    assert f.corridors.median == pytest.approx(1.2, abs=0.02)
+    assert f.sliver_types == {"storage": 1}
+    assert f.sliver_pct == pytest.approx(25.0)
+
+
+# -- the design table ----------------------------------------------------------------------------
+
+
+def test_every_room_type_the_planners_emit_has_an_entry() -> None:
+    emitted = set(ROOMS)
+    for typ in TYPOLOGIES.values():
+        for template in (typ.ground, typ.upper, typ.top):
+            if template is not None:
+                emitted |= {template.hub, *(r.room_type for r in template.rooms)}
+                emitted |= {z.hub for z in template.zones}
+    missing = sorted(t for t in emitted if t not in ROOM_DESIGN)
+    assert not missing
+    for t in emitted:
+        d = ROOM_DESIGN[t]
+        assert d.min_area > 0 and d.min_width > 0 and d.max_aspect >= 1
+        # the minimum clear width fits a room of the minimum area
+        assert d.min_width**2 <= d.min_area * 1.01 or d.circulation, t
+
+
+def test_lookup_normalises_open_vocabulary() -> None:
+    assert design_key("Master Bedroom 2") == "master_bedroom"
+    assert design_key("toilets") == "toilet"
+    assert design_key("guest_rooms") == "guest_room"
+    assert design_key("Disabled toilet") == "accessible_toilet"
+    assert design_key("kids_bedroom") == "bedroom"
+    assert design_key("corridr") == "corridor"  # a close spelling
+    assert design_key("xylophone") is None
+    assert room_design("xylophone") == DEFAULT_DESIGN
+    assert room_design("ward").own_bathroom and room_design("guest_room").own_bathroom
+    assert not room_design("bedroom").own_bathroom
+
+
+def test_corridor_widths_by_building_type() -> None:
+    assert corridor_width("family_apartment") >= 1.1
+    assert 1.5 <= corridor_width("office") <= 1.8 and 1.5 <= corridor_width("school") <= 1.8
+    assert corridor_width("hospital") >= 2.4
+    assert corridor_width(None) == corridor_width("some new type")
+    assert set(CORRIDOR_WIDTH) >= {bench_case(s)[0] for s in range(14)}
+
+
+# -- planners ------------------------------------------------------------------------------------
+
+
+def test_fit_minimums_never_goes_below_a_minimum() -> None:
+    rooms = [("bedroom", 4.0), ("living_room", 30.0), ("study", 5.0), ("storage", 3.0)]
+    # Room enough: the bedroom is raised, the living room gives what it has above its minimum.
+    keep, areas, missing = fit_minimums(rooms, 42.0, [2, 3])
+    assert keep == [0, 1, 2, 3] and missing == 0 and sum(areas) == pytest.approx(42.0)
+    assert areas[0] == pytest.approx(min_target("bedroom")) and areas[1] < 30.0
+    # Too little: the study goes first; then everything fits at or above its minimum.
+    keep, areas, missing = fit_minimums(rooms, 30.0, [2, 3])
+    assert keep == [0, 1, 3] and missing == 0
+    assert sum(areas) == pytest.approx(30.0)
+    for i, a in zip(keep, areas):
+        assert a >= min_target(rooms[i][0]) - 1e-9
+    # Nothing to drop and too little area: rooms stay at their minimum, the shortfall reported.
+    keep, areas, missing = fit_minimums([("bedroom", 4.0), ("bedroom", 4.0)], 10.0, [])
+    assert keep == [0, 1] and missing == pytest.approx(2 * min_target("bedroom") - 10.0)
+    assert all(a == pytest.approx(min_target("bedroom")) for a in areas)
+
+
+@pytest.mark.parametrize("seed", range(14))
+def test_planned_rooms_respect_the_table(seed: int) -> None:
+    kind, floors, text = bench_case(seed)
+    b = generate_building(text, building_type=kind, floors=min(floors, 3), seed=seed)
+    for floor in b.floors:
+        program = b.program.floor_program(floor.index)
+        for node in floor.graph.nodes:
+            if node.is_core:
+                assert node.min_width is None
+                continue
+            assert node.min_width is not None and 0 < node.min_width <= math.sqrt(node.area)
+            assert node.min_width <= min(MAX_NODE_WIDTH, room_design(node.room_type).min_width) or (
+                design_key(node.room_type) in CORRIDOR_TYPES
+            )
+            if design_key(node.room_type) in ("corridor", "ward_corridor"):
+                assert node.min_width == pytest.approx(
+                    min(corridor_width(kind), math.sqrt(node.area / 1.5)), abs=0.01
+                )
+        hub = program.rooms[0].id
+        for room in program.rooms:
+            if room.id != hub and room.parent is None:
+                # with its own bathroom, if it has one
+                pair = room.area + sum(r.area for r in program.rooms if r.parent == room.id)
+                assert pair >= min_target(room.room_type) - 0.02, (kind, room.id, room.area)
+                assert room.area >= AREA_MARGIN * room_design(room.room_type).min_area - 0.02
+        # Rooms with a bathroom of their own have exactly one, entered from them only.
+        for room in program.rooms:
+            if room_design(room.room_type).own_bathroom:
+                baths = [r for r in program.rooms if r.parent == room.id]
+                assert len(baths) == 1 and baths[0].room_type == "ensuite"
+                assert floor.graph.neighbours(baths[0].id) == [room.id]
+
+
+def test_a_floor_too_small_drops_optional_rooms_and_records_it() -> None:
+    b = generate_building("a villa", building_type="villa", floors=2, area=75.0, seed=3)
+    notes = [n for f in b.floors for n in f.relaxations if n.startswith("dropped")]
+    assert notes
+    for floor in b.floors:
+        assert isinstance(b.program.floors[floor.index], FloorProgram)
+        for node in floor.graph.nodes:
+            if not node.is_core and node.type != "main":
+                assert node.area >= AREA_MARGIN * room_design(node.room_type).min_area - 0.02
+
+
+# -- the command ---------------------------------------------------------------------------------
+
+
+def test_cli_realism_on_a_generated_building_and_synthetic_plans(tmp_path: Path) -> None:
+    out = tmp_path / "studio"
+    r = runner.invoke(app, ["generate", "a studio flat", "--out", str(out), "--seed", "0"])
+    assert r.exit_code == 0, r.output
+    data = write_plans(tmp_path / "t2d", range(6))
+    report_path = tmp_path / "realism.json"
+    r = runner.invoke(
+        app, ["eval", "realism", str(out), "--reference", str(data), "--json", str(report_path)]
+    )
+    assert r.exit_code == 0, r.output
+    assert "overall" in r.output and "reference" in r.output
+    report = json.loads(report_path.read_text())
+    rooms = sum(1 for f in json.loads((out / "building.json").read_text())["floors"]
+                for room in f["layout"]["rooms"] if room["type"] not in ("stair", "elevator"))
+    assert report["overall"]["rooms"] == rooms and report["overall"]["buildings"] == 1
+    assert set(report["by_type"]) == {"studio"}
+    plans = [T2DPlan.load(p) for p in plans_folder(data).glob("*.json")]
+    assert report["reference"]["rooms"] == sum(len(p.rooms) for p in plans)
+    # Guillotine boxes at least 4 cells (16 px = 1.44 m) a side: nothing narrower than 1 m.
+    assert report["reference"]["sliver"] == 0 and report["reference"]["no_square"] == 0
+
+
+def test_cli_realism_generates_and_rejects_nothing_to_measure(tmp_path: Path) -> None:
+    r = runner.invoke(app, ["eval", "realism", "--generate", "2", "--seed", "0", "--json", str(tmp_path / "r.json")])
+    assert r.exit_code == 0, r.output
+    report = json.loads((tmp_path / "r.json").read_text())
+    assert report["overall"]["buildings"] == 2 and set(report["by_type"]) == {"studio", "family_apartment"}
+    r = runner.invoke(app, ["eval", "realism"])
+    assert r.exit_code != 0 and "nothing to measure" in r.output
+    r = runner.invoke(app, ["eval", "realism", str(tmp_path / "missing")])
+    assert r.exit_code != 0 and "no building.json" in r.output
