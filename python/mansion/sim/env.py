@@ -546,14 +546,10 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
             return far
         value = 1.0 if opened else 0.0
         if object_id in st.doors:
-            door = st.doors[object_id]
-            before = door.openness
-            door.openness = value
-            st.invalidate()
-            if not opened and self._agent_cell() is None:
-                door.openness = before
-                st.invalidate()
+            if not opened and self.distance_to(object_id) < st.radius:
                 return SkillResult(False, f"the agent stands in the doorway of {object_id}")
+            st.doors[object_id].openness = value
+            st.invalidate()
         else:
             st.objects[object_id].obj.openness = value
         if self.backend is not None:

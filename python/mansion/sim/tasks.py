@@ -203,9 +203,12 @@ def _rooms(st: FloorState) -> list[str]:
     return sorted(r for r in st.rooms if r not in st.core_ids)
 
 
-def _prefer(items: list[Any], key: Any, wanted: tuple[str, ...], rng: random.Random) -> Any:
-    good = [i for i in items if key(i) in wanted] if wanted else []
-    return rng.choice(good or items)
+def _prefer(items: list[Any], key: Any, wanted: tuple[str, ...], rng: random.Random,
+            used: set[str] = frozenset(), ident: Any = lambda i: i) -> Any:
+    """A random item, of a wanted type when there is one, not yet used when there is one."""
+    fresh = [i for i in items if ident(i) not in used] or items
+    good = [i for i in fresh if key(i) in wanted] if wanted else []
+    return rng.choice(good or fresh)
 
 
 def plan_task(bmap: BuildingMap, start_floor: int, start_cell: tuple[int, int], target: ObjectInfo,
@@ -262,7 +265,8 @@ def sample_tasks(building_dir: str | Path, n: int, seed: int = 0, *, setting: Se
         if not pool:
             report.rejected[f"no object to fetch on floor {t}"] += 1
             continue
-        target = _prefer(pool, lambda o: o.props.object_type, setting.target_types if setting else (), rng)
+        target = _prefer(pool, lambda o: o.props.object_type, setting.target_types if setting else (), rng,
+                         {k[0] for k in seen}, lambda o: o.id)
         dst = bmap.floor(d)
         kind = setting.destination if setting else rng.choice(("room", "receptacle"))
         dest_rec: ObjectInfo | None = None
