@@ -206,7 +206,7 @@ def _rooms(st: FloorState) -> list[str]:
 def _prefer(items: list[Any], key: Any, wanted: tuple[str, ...], rng: random.Random,
             used: set[str] = frozenset(), ident: Any = lambda i: i) -> Any:
     """A random item, of a wanted type when there is one, not yet used when there is one."""
-    fresh = [i for i in items if ident(i) not in used] or items
+    fresh = ([i for i in items if ident(i) not in used] or items) if used else items
     good = [i for i in fresh if key(i) in wanted] if wanted else []
     return rng.choice(good or fresh)
 
