@@ -203,12 +203,28 @@ def _rooms(st: FloorState) -> list[str]:
     return sorted(r for r in st.rooms if r not in st.core_ids)
 
 
-def _prefer(items: list[Any], key: Any, wanted: tuple[str, ...], rng: random.Random,
-            used: set[str] = frozenset(), ident: Any = lambda i: i) -> Any:
-    """A random item, of a wanted type when there is one, not yet used when there is one."""
-    fresh = ([i for i in items if ident(i) not in used] or items) if used else items
-    good = [i for i in fresh if key(i) in wanted] if wanted else []
-    return rng.choice(good or fresh)
+def _prefer(items: list[Any], key: Any, wanted: tuple[str, ...], rng: random.Random) -> Any:
+    """A random item, of a wanted type when there is one."""
+    good = [i for i in items if key(i) in wanted] if wanted else []
+    return rng.choice(good or items)
+
+
+def _pick_target(pool: list[ObjectInfo], st: FloorState, setting: Setting | None, rng: random.Random,
+                 used: set[str]) -> ObjectInfo:
+    """A random target not yet used (when there is one), matching as many of the setting's
+    wishes (object type, receptacle type, room type) as any candidate does."""
+    fresh = [o for o in pool if o.id not in used] or pool
+    if setting is None:
+        return rng.choice(fresh)
+
+    def wishes(o: ObjectInfo) -> int:
+        rec = st.objects[o.parent].props.object_type if o.parent else ""
+        room = st.rooms[o.room].room_type if o.room in st.rooms else ""
+        return ((o.props.object_type in setting.target_types) + (rec in setting.receptacle_types)
+                + (room in setting.room_types))
+
+    best = max(wishes(o) for o in fresh)
+    return rng.choice([o for o in fresh if wishes(o) == best])
 
 
 def plan_task(bmap: BuildingMap, start_floor: int, start_cell: tuple[int, int], target: ObjectInfo,
@@ -257,16 +273,10 @@ def sample_tasks(building_dir: str | Path, n: int, seed: int = 0, *, setting: Se
             pools[t] = _targets(bmap.floor(t))
             report.excluded.update(pools[t][1])
         pool = pools[t][0]
-        if setting is not None and setting.room_types:
-            pool = [o for o in pool if bmap.floor(t).rooms[o.room or ""].room_type in setting.room_types] or pool
-        if setting is not None and setting.receptacle_types:
-            pool = [o for o in pool if o.parent and bmap.floor(t).objects[o.parent].props.object_type
-                    in setting.receptacle_types] or pool
         if not pool:
             report.rejected[f"no object to fetch on floor {t}"] += 1
             continue
-        target = _prefer(pool, lambda o: o.props.object_type, setting.target_types if setting else (), rng,
-                         {k[0] for k in seen}, lambda o: o.id)
+        target = _pick_target(pool, bmap.floor(t), setting, rng, {k[0] for k in seen})
         dst = bmap.floor(d)
         kind = setting.destination if setting else rng.choice(("room", "receptacle"))
         dest_rec: ObjectInfo | None = None
