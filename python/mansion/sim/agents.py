@@ -46,9 +46,7 @@ class OracleAgent:
         held = env.held
         for t in task.targets:
             if held is None or held.id != t.object_id:
-                where = self._where(bmap, t.object_id)
-                if where is None:
-                    return actions
+                where = t.floor
                 leg = bmap.route(floor, cell, where, BuildingMap.object_goal(t.object_id))
                 if leg is None:
                     return actions
@@ -67,15 +65,6 @@ class OracleAgent:
             floor, cell = leg.floor, leg.cell
             held = None
         return actions
-
-    def _where(self, bmap: BuildingMap, object_id: str) -> int | None:
-        env = self.env
-        if object_id in env.state.objects:
-            return int(env.floor)
-        for f in env.building.floors:
-            if f != env.floor and object_id in bmap.floor(f).objects:
-                return int(f)
-        return None
 
     def __call__(self, obs: dict[str, Any], info: dict[str, Any]) -> Any:
         if self.planned and not info.get("success", True):

@@ -651,6 +651,11 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
         held = self.held
         pose = landing.pose
         obj: HouseObject | None = None
+        if held is not None and _holds_id(self.building.house(target).objects, held.id):
+            # a house's object ids are unique (the simulator's object ids): a copied floor has
+            # an object of the same id already
+            return SkillResult(False, f"floor {target} already has an object {held.id!r}; "
+                               "the held object cannot go there")
         if held is not None:
             obj = self.state.detach(held.id)
             obj.position = Vec3(x=pose.position.x, y=AGENT_Y, z=pose.position.z)
@@ -683,7 +688,7 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
 
     # -- task progress --------------------------------------------------------------------------
     def _mark_retrieved(self, object_id: str) -> None:
-        if self.task is not None and object_id in {t.object_id for t in self.task.targets}:
+        if self.task is not None and (self.floor, object_id) in {(t.floor, t.object_id) for t in self.task.targets}:
             self._held_targets.add(object_id)
             if self._held_targets >= {t.object_id for t in self.task.targets}:
                 self.retrieved = True
@@ -839,6 +844,10 @@ def _free_spot(rec: ObjectInfo, held: ObjectInfo, into: bool) -> tuple[float, fl
             continue
         return (cx, y, cz)
     return None
+
+
+def _holds_id(objects: list[HouseObject], oid: str) -> bool:
+    return any(o.id == oid or _holds_id(o.children, oid) for o in objects)
 
 
 def _wd(obj: HouseObject) -> tuple[float, float]:

@@ -259,6 +259,7 @@ def sample_tasks(building_dir: str | Path, n: int, seed: int = 0, *, setting: Se
     seen: set[tuple[str, str, str, int]] = set()
     pools: dict[int, tuple[list[ObjectInfo], Counter[str]]] = {}
     attempts = 0
+    building_ids: Counter[str] | None = None
     while len(report.tasks) < n and attempts < 40 * max(n, 1):
         attempts += 1
         report.candidates += 1
@@ -275,6 +276,12 @@ def sample_tasks(building_dir: str | Path, n: int, seed: int = 0, *, setting: Se
         pool = pools[t][0]
         if not pool:
             report.rejected[f"no object to fetch on floor {t}"] += 1
+            continue
+        if building_ids is None:
+            building_ids = Counter(i for f in floors for i in bmap.floor(f).objects)
+        pool = [o for o in pool if building_ids[o.id] == 1]
+        if not pool:
+            report.rejected[f"every object of floor {t} has its id on another floor too (a copied floor)"] += 1
             continue
         target = _pick_target(pool, bmap.floor(t), setting, rng, {k[0] for k in seen})
         dst = bmap.floor(d)
