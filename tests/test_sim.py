@@ -296,6 +296,10 @@ def test_elevator_carries_the_object_to_the_target_floor_house(office: Path, tmp
     # an elevator that does not serve a floor
     lift.floors = [0, 1, 2]
     fails(env, "UseElevator", 3, reason="does not serve floor 3")
+    # object ids are unique in a house: a floor holding one of the same id refuses the object
+    twin = env.state.objects[obj].obj.model_copy(update={"id": obj})
+    env.building.house(1).objects.append(twin)
+    fails(env, "UseElevator", 1, reason=f"already has an object {obj!r}")
 
 
 def test_stairs(office: Path) -> None:

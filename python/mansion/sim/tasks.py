@@ -144,7 +144,7 @@ SETTINGS: dict[str, Setting] = {
         Setting("single-floor", "a one-storey family apartment", 1, 0, 0, 0, 0, "room",
                 ("Box",), ("Bed",), (), ("Bathroom",),
                 "Find a box on the bed and bring it to the bathroom."),
-        Setting("two-floor", "a two-storey office", 2, 0, 0, 0, 1, "receptacle",
+        Setting("two-floor", "a two-storey office", 2, 2, 0, 0, 1, "receptacle",
                 ("CellPhone",), ("Sofa",), (), ("DiningTable", "CoffeeTable", "SideTable"),
                 "Find a cellphone on a blue couch on the first floor and bring it to the round "
                 "table on the second floor."),
