@@ -120,7 +120,8 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
 
     # -- episode --------------------------------------------------------------------------------
     def _start(self, floor: int, pose: Any) -> None:
-        self.building = Building(self._pristine.manifest_path)
+        self.building = self._pristine.fresh()
+        self.state = None  # type: ignore[assignment]
         self.cars = {c.id: _Car(min(c.floors)) for c in self.building.manifest.cores if c.kind == "elevator"}
         self.steps = 0
         self.path_length = 0.0
@@ -138,8 +139,10 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
         self.trace.append((floor, [(self.x, self.z)]))
 
     def _load(self, floor: int) -> None:
+        if getattr(self, "state", None) is not None and self.state.changed_grid:
+            self.building.dirty.add(self.floor)
         self.floor = floor
-        self.state = FloorState(self.building.house(floor), {c.id: c for c in self.building.cores_on(floor)}, self.cell)
+        self.state = self.building.floor_state(floor, self.cell)
         self._renderer = None
         if self.backend is not None:
             self.backend.load_floor(self.building.house(floor).to_dict())

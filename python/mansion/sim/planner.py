@@ -53,6 +53,12 @@ class BuildingMap:
         return self.states[f]
 
     def grid(self, f: int) -> NavGrid:
+        # a floor only ridden through needs its grid, not its objects: the building's grids of
+        # unchanged floors spare parsing their houses
+        if f not in self.states and f not in self.building.dirty:
+            cached = self.building.grids.get(f)
+            if cached is not None and cached.cell == self.cell:
+                return cached
         return self.floor(f).grid
 
     def landing_mask(self, f: int, core: Any) -> np.ndarray | None:
@@ -94,11 +100,14 @@ class BuildingMap:
                 if here is None:
                     continue
                 walk = () if via == core.id else (("GoToRoom", core.id),)
+                # rides toward the goal only: straight to its floor when the core serves it,
+                # else to the floors where another core may take over; stairs a floor closer
                 if core.kind == "elevator":
-                    hops = [(k, walk + (("CallElevator",), ("UseElevator", k))) for k in core.floors if k != f]
+                    ks = [goal_floor] if goal_floor in core.floors else core.floors
+                    hops = [(k, walk + (("CallElevator",), ("UseElevator", k))) for k in ks if k != f]
                 else:
                     hops = [(k, walk + (("TakeStairs", "Up" if k > f else "Down"),))
-                            for k in (f + 1, f - 1) if k in core.floors]
+                            for k in (f + 1, f - 1) if k in core.floors and abs(k - goal_floor) < abs(f - goal_floor)]
                 for k, acts in hops:
                     if self.building.landing(core, k) is None:
                         continue

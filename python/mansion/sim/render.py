@@ -11,6 +11,7 @@ from __future__ import annotations
 import hashlib
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
@@ -116,6 +117,18 @@ class FloorPainter:
         return np.asarray(img)
 
 
+def _wrap(text: str, font: Any, width: float) -> list[str]:
+    lines, line = [], ""
+    for word in text.split():
+        trial = f"{line} {word}".strip()
+        if line and font.getlength(trial) > width:
+            lines.append(line)
+            line = word
+        else:
+            line = trial
+    return lines + ([line] if line else [])
+
+
 def draw_episode(states: dict[int, FloorState], trace: list[tuple[int, list[tuple[float, float]]]],
                  out: str | Path, title: str = "", marks: dict[int, list[tuple[float, float, str]]] | None = None,
                  px: int = 16) -> Path:
@@ -140,19 +153,26 @@ def draw_episode(states: dict[int, FloorState], trace: list[tuple[int, list[tupl
             p = painter.to_px(x, z)
             d.rectangle((p[0] - px / 3, p[1] - px / 3, p[0] + px / 3, p[1] + px / 3), outline=(120, 0, 160), width=3)
             d.text((p[0] + px / 2, p[1] - px / 2), label, fill=(120, 0, 160), font=font)
-        d.text((6, 4), f"floor {f}", fill=(0, 0, 0), font=font)
-        panels.append(img)
+        band = Image.new("RGB", (img.width, max(14, px) + 8), (255, 255, 255))
+        ImageDraw.Draw(band).text((4, 2), f"floor {f}", fill=(0, 0, 0), font=font)
+        panel = Image.new("RGB", (img.width, img.height + band.height), (255, 255, 255))
+        panel.paste(band, (0, 0))
+        panel.paste(img, (0, band.height))
+        panels.append(panel)
     gap = 12
-    head = (max(14, px) + 10) if title else 0
     w = sum(p.width for p in panels) + gap * (len(panels) - 1)
+    lines = _wrap(title, font, w - 12) if title else []
+    line_h = max(14, px) + 6
+    head = line_h * len(lines) + (6 if lines else 0)
     h = max(p.height for p in panels) + head
     sheet = Image.new("RGB", (w, h), (255, 255, 255))
     x = 0
     for p in panels:
-        sheet.paste(p, (x, head + (h - head - p.height)))
+        sheet.paste(p, (x, head))
         x += p.width + gap
-    if title:
-        ImageDraw.Draw(sheet).text((6, 4), title, fill=(0, 0, 0), font=font)
+    d = ImageDraw.Draw(sheet)
+    for k, line in enumerate(lines):
+        d.text((6, 4 + k * line_h), line, fill=(0, 0, 0), font=font)
     import io
 
     buf = io.BytesIO()

@@ -90,8 +90,11 @@ def find_manifest(path: str | Path) -> Path:
 class FloorState:
     """One floor's house and what the skills need to read from it."""
 
-    def __init__(self, house: House, cores: dict[str, ManifestCore], cell: float = CELL):
+    def __init__(self, house: House, cores: dict[str, ManifestCore], cell: float = CELL,
+                 grid: NavGrid | None = None):
         self.house = house
+        #: set when floor objects or doors changed: the grid of the floor as written no longer holds
+        self.changed_grid = False
         self.cell = cell
         self.core_ids = {r.id for r in house.rooms if r.metadata and r.metadata.core} | set(cores)
         record = house.metadata.mansion
@@ -101,7 +104,7 @@ class FloorState:
         self.polygons = {r.id: Polygon([(p.x, p.z) for p in r.floor_polygon]) for r in house.rooms}
         self.objects: dict[str, ObjectInfo] = {}
         self.reindex()
-        self._grid: NavGrid | None = None
+        self._grid: NavGrid | None = grid
         self._landmarks: dict[str, tuple[float, float]] | None = None
 
     # -- objects --------------------------------------------------------------------------------
@@ -149,6 +152,7 @@ class FloorState:
         self.reindex()
         if info.parent is None and not (info.obj.model_extra or {}).get(HELD_KEY):
             self._grid = None  # a floor object moved: the free space changed
+            self.changed_grid = True
         return info.obj
 
     def attach(self, obj: HouseObject, parent: str | None) -> None:
@@ -175,6 +179,7 @@ class FloorState:
     def invalidate(self) -> None:
         self.version += 1
         self._grid = None
+        self.changed_grid = True
 
     @property
     def landmarks(self) -> dict[str, tuple[float, float]]:
@@ -231,6 +236,11 @@ class Building:
     manifest_path: Path
     manifest: BuildingManifest = field(init=False)
     houses: dict[int, House] = field(default_factory=dict)
+    #: the floors' files as read, shared by the episodes of an env (each parses its own copy)
+    raw: dict[int, bytes] = field(default_factory=dict)
+    #: grids of floors as written, shared likewise; ``dirty`` floors have changed since
+    grids: dict[int, NavGrid] = field(default_factory=dict)
+    dirty: set[int] = field(default_factory=set)
 
     def __post_init__(self) -> None:
         self.manifest_path = find_manifest(self.manifest_path)
@@ -247,12 +257,33 @@ class Building:
         if floor not in self.houses:
             if floor not in self.floor_files:
                 raise InvalidInputError(f"the building has no floor {floor}")
-            self.houses[floor] = House.load(self.floor_files[floor])
+            if floor not in self.raw:
+                try:
+                    self.raw[floor] = self.floor_files[floor].read_bytes()
+                except OSError as exc:
+                    raise InvalidInputError(f"cannot read house JSON {str(self.floor_files[floor])!r}: {exc}") from exc
+            try:
+                self.houses[floor] = House.model_validate_json(self.raw[floor])
+            except ValueError as exc:
+                raise InvalidInputError(f"{self.floor_files[floor]}: {exc}") from exc
         return self.houses[floor]
 
     def floor_state(self, floor: int, cell: float = CELL) -> FloorState:
+        """A floor's state, with the grid of the floor as written when nothing changed it."""
         cores = {c.id: c for c in self.manifest.cores if floor in c.floors}
-        return FloorState(self.house(floor), cores, cell)
+        clean = floor not in self.dirty
+        grid = self.grids.get(floor) if clean and self.grids.get(floor, None) is not None \
+            and self.grids[floor].cell == cell else None
+        st = FloorState(self.house(floor), cores, cell, grid)
+        if clean and grid is None:
+            self.grids[floor] = st.grid
+        return st
+
+    def fresh(self) -> Building:
+        """The building as written again, sharing what was read and built from the files."""
+        b = Building(self.manifest_path)
+        b.raw, b.grids = self.raw, self.grids
+        return b
 
     def cores_on(self, floor: int) -> list[ManifestCore]:
         return [c for c in self.manifest.cores if floor in c.floors]
