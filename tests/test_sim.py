@@ -473,3 +473,51 @@ def test_cli_paper_setting(tmp_path: Path) -> None:
     s = json.loads((tmp_path / "s.json").read_text())["single-floor"]
     assert s["tasks"] == 3 and s["success"] == 100.0 and s["cross_floor"] == 0
     assert SETTINGS["four-floor"].floors == 4
+
+
+def test_remaining_failure_reasons(office: Path, apartment: Path) -> None:
+    env = BuildingEnv(office)
+    env.reset()
+    lift = next(c for c in env.building.cores_on(0) if c.kind == "elevator")
+    stair = next(c for c in env.building.cores_on(0) if c.kind == "stair")
+    # a skill called without its argument
+    res = env.call("PickUp")
+    assert not res.success and "bad arguments" in res.reason
+    # an unreachable room (its free cells taken away), with no closed door to blame
+    room = next(r for r in sorted(env.state.rooms) if r not in env.state.core_ids and r != env.room)
+    g = env.state.grid
+    g.free[g.label == g.room_ids.index(room)] = False
+    g._dist_cache.clear()
+    fails(env, "GoToRoom", room, reason="(unreachable)")
+    env.state.invalidate()
+    # standing nowhere an agent can move from
+    x, z = env.x, env.z
+    env.x, env.z = -100.0, -100.0
+    fails(env, "GoToRoom", room, reason="cannot move")
+    env.x, env.z = x, z
+    # the top floor has no floor above; a core without a landing on a floor
+    assert env.GoToRoom(lift.id).success and env.CallElevator().success
+    saved = list(lift.landings)
+    lift.landings = [l for l in saved if l.floor != 3]
+    fails(env, "UseElevator", 3, reason="has no landing on floor 3")
+    lift.landings = saved
+    assert env.UseElevator(3).success
+    assert env.GoToRoom(stair.id).success
+    fails(env, "TakeStairs", "Up", reason="no floor above floor 3")
+    saved = list(stair.landings)
+    stair.landings = [l for l in saved if l.floor != 3]
+    fails(env, "GoToRoom", stair.id, reason="has no landing on floor 3")
+    stair.landings = saved
+
+    env = BuildingEnv(apartment)
+    env.reset()
+    door = next(d for d in env.state.house.doors if d.openable)
+    door.openable = False
+    fails(env, "Open", door.id, reason="an opening without a door leaf")
+    door.openable = True
+    far = max((d for d in env.state.house.doors if d.openable), key=lambda d: env.distance_to(d.id))
+    fails(env, "Close", far.id, reason="m away")
+    # an openable thing in hand
+    laptop = find(env, lambda i: i.props.openable and i.props.pickupable and i.parent and not i.obj.children)
+    assert env.GoToObject(laptop.id).success and env.PickUp(laptop.id).success
+    fails(env, "Open", laptop.id, reason="put")
