@@ -27,14 +27,12 @@ from typing import Any, NamedTuple
 import gymnasium as gym
 import numpy as np
 from gymnasium import spaces
-from shapely.geometry import Polygon, box
-from shapely.affinity import rotate, translate
 
 from mansion.exceptions import InvalidInputError
 from mansion.scene.house import HouseObject, Vec3
 from mansion.scene.poses import AGENT_Y, yaw_of
 from mansion.scene.validate import REACH
-from mansion.sim.grid import CELL, Path as Walk, _segment_distance
+from mansion.sim.grid import CELL, Path as Walk, _segment_distance, box_distance
 from mansion.sim.world import HELD_KEY, Building, FloorState, ObjectInfo
 
 __all__ = ["SKILLS", "BuildingEnv", "SkillResult"]
@@ -351,8 +349,6 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
         if info is None:
             return None
         p = info.props
-        from mansion.sim.grid import box_distance
-
         return box_distance(px, pz, info.centre, p.width, p.depth, info.obj.rotation.y)
 
     def _door_segment(self, door_id: str) -> tuple[tuple[float, float], tuple[float, float]]:
