@@ -521,3 +521,15 @@ def test_remaining_failure_reasons(office: Path, apartment: Path) -> None:
     laptop = find(env, lambda i: i.props.openable and i.props.pickupable and i.parent and not i.obj.children)
     assert env.GoToObject(laptop.id).success and env.PickUp(laptop.id).success
     fails(env, "Open", laptop.id, reason="put")
+
+
+def test_task_starting_in_a_room(apartment: Path) -> None:
+    task = sample_tasks(apartment, 1, seed=4).tasks[0]
+    env = BuildingEnv(apartment)
+    room = task.targets[0].room
+    spec = task.model_copy(update={"start": task.start.model_copy(update={"pose": None, "room": room})})
+    env.reset(options={"task": spec})
+    assert env.room == room and env.floor == spec.start.floor
+    assert run_task(env, spec, OracleAgent).success
+    with pytest.raises(InvalidInputError):
+        env.reset(options={"task": spec.model_copy(update={"start": spec.start.model_copy(update={"room": "nowhere"})})})
