@@ -260,15 +260,20 @@ def sample_tasks(building_dir: str | Path, n: int, seed: int = 0, *, setting: Se
     pools: dict[int, tuple[list[ObjectInfo], Counter[str]]] = {}
     attempts = 0
     building_ids: Counter[str] | None = None
+    cross_failures = 0
     while len(report.tasks) < n and attempts < 40 * max(n, 1):
         attempts += 1
         report.candidates += 1
         i = len(report.tasks)
+        forced = False
         if setting is not None:
             s, t, d = setting.start_floor, setting.target_floor, setting.destination_floor
         else:
             s, t, d = rng.choice(floors), rng.choice(floors), rng.choice(floors)
-            if len(floors) > 1 and i % 2 == 0 and s == t == d:
+            # every other task crosses floors, while crossing ones can be found at all (a
+            # building whose cores no one reaches still gets tasks on its floors)
+            forced = len(floors) > 1 and i % 2 == 0 and cross_failures < 25
+            if forced and s == t == d:
                 d = rng.choice([f for f in floors if f != t])
         if t not in pools:
             pools[t] = _targets(bmap.floor(t))
@@ -318,6 +323,7 @@ def sample_tasks(building_dir: str | Path, n: int, seed: int = 0, *, setting: Se
         legs = plan_task(bmap, s, start_cell, target, t, d, dest_room, dest_rec.id if dest_rec else None)
         if isinstance(legs, str):
             report.rejected[legs] += 1
+            cross_failures += setting is None and forced
             continue
         seen.add(key)
         oracle_steps = len(legs[0].actions) + len(legs[1].actions) + 4
