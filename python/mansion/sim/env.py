@@ -114,12 +114,13 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
         self.observation_space = spaces.Dict(obs)
         self.task: Any = None
         self._renderer: Any = None
+        self.state: FloorState
+        self.floor: int = 0
         self._start(self.building.floors[0], None)
 
     # -- episode --------------------------------------------------------------------------------
     def _start(self, floor: int, pose: Any) -> None:
         self.building = self._pristine.fresh()
-        self.state = None  # type: ignore[assignment]
         self.cars = {c.id: _Car(min(c.floors)) for c in self.building.manifest.cores if c.kind == "elevator"}
         self.steps = 0
         self.path_length = 0.0
@@ -129,15 +130,15 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
         self.retrieved = False
         self.navigated = False
         self._held_targets: set[str] = set()
-        self._load(floor)
+        self._load(floor, leaving=False)
         spec = pose if pose is not None else self.building.manifest.floors[
             [f.index for f in self.building.manifest.floors].index(floor)].spawn
         self.x, self.z, self.yaw = spec.position.x, spec.position.z, spec.rotation.y
         self._settle()
         self.trace.append((floor, [(self.x, self.z)]))
 
-    def _load(self, floor: int) -> None:
-        if getattr(self, "state", None) is not None and self.state.changed_grid:
+    def _load(self, floor: int, leaving: bool = True) -> None:
+        if leaving and self.state.changed_grid:
             self.building.dirty.add(self.floor)
         self.floor = floor
         self.state = self.building.floor_state(floor, self.cell)

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import shapely
@@ -251,7 +252,7 @@ class NavGrid:
         return out
 
 
-def _clear_near(mask: NDArray[np.bool_], gx: NDArray[np.float64], gz: NDArray[np.float64], radius: float,
+def _clear_near(mask: NDArray[np.bool_], gx: NDArray[Any], gz: NDArray[Any], radius: float,
                 distance: object, bbox: tuple[float, float, float, float]) -> None:
     """Mark cells of ``mask`` closer than ``radius`` to a shape (given by its distance function
     and bounding box) as blocked."""

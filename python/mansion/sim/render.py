@@ -160,16 +160,16 @@ def draw_episode(states: dict[int, FloorState], trace: list[tuple[int, list[tupl
         panel.paste(img, (0, band.height))
         panels.append(panel)
     gap = 12
-    w = sum(p.width for p in panels) + gap * (len(panels) - 1)
+    w = sum(panel.width for panel in panels) + gap * (len(panels) - 1)
     lines = _wrap(title, font, w - 12) if title else []
     line_h = max(14, px) + 6
     head = line_h * len(lines) + (6 if lines else 0)
-    h = max(p.height for p in panels) + head
+    h = max(panel.height for panel in panels) + head
     sheet = Image.new("RGB", (w, h), (255, 255, 255))
     x = 0
-    for p in panels:
-        sheet.paste(p, (x, head))
-        x += p.width + gap
+    for panel in panels:
+        sheet.paste(panel, (x, head))
+        x += panel.width + gap
     d = ImageDraw.Draw(sheet)
     for k, line in enumerate(lines):
         d.text((6, 4 + k * line_h), line, fill=(0, 0, 0), font=font)

@@ -165,7 +165,7 @@ class SampleReport:
 
 
 def _words(s: str) -> str:
-    out = []
+    out: list[str] = []
     for ch in s:
         if ch.isupper() and out and out[-1] != " ":
             out.append(" ")
@@ -250,9 +250,10 @@ def sample_tasks(building_dir: str | Path, n: int, seed: int = 0, *, setting: Se
         raise InvalidInputError(f"--n must be at least 0, not {n}")
     building = Building(Path(building_dir))
     floors = building.floors
-    for f in (setting.start_floor, setting.target_floor, setting.destination_floor) if setting else ():
-        if f not in floors:
-            raise InvalidInputError(f"setting {setting.name!r} needs floor {f}; the building has {floors}")
+    if setting is not None:
+        for f in (setting.start_floor, setting.target_floor, setting.destination_floor):
+            if f not in floors:
+                raise InvalidInputError(f"setting {setting.name!r} needs floor {f}; the building has {floors}")
     bmap = BuildingMap(building, cell)
     rng = random.Random(seed)
     report = SampleReport([])

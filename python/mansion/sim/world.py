@@ -10,13 +10,12 @@ top, where ``Put`` leaves it) is hidden and out of reach while the receptacle is
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-from shapely.geometry import Polygon
+from shapely.geometry import Point, Polygon
 from shapely.ops import polylabel
 
 from mansion.exceptions import InvalidInputError
@@ -222,9 +221,7 @@ class FloorState:
         return links
 
 
-def _point(x: float, z: float) -> Any:
-    from shapely.geometry import Point
-
+def _point(x: float, z: float) -> Point:
     return Point(x, z)
 
 
