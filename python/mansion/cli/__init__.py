@@ -2,8 +2,10 @@
 
 from mansion.cli.evaluate import eval_app, tune_weights
 from mansion.cli.main import app
+from mansion.cli.tasks import tasks_app
 
 app.add_typer(eval_app, name="eval")
 app.command("tune-weights")(tune_weights)
+app.add_typer(tasks_app, name="tasks")
 
 __all__ = ["app"]
