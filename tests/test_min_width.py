@@ -118,3 +118,36 @@ def test_width_rules_are_relaxed_last_and_recorded(monkeypatch: pytest.MonkeyPat
     f = b.floors[0]
     assert f.attempts == gen.ATTEMPTS and calls[-1] is False
     assert any("minimum clear width" in r for r in f.relaxations)
+
+
+def passable_parts(poly: Polygon, width: float) -> int:
+    """Pieces of what a ``width``-wide agent's centre can reach in ``poly`` (erosion by a hair
+    under half the width): 1 when every part of the room connects through passages that wide."""
+    core = poly.buffer(-(width / 2 - 0.01), join_style="mitre")
+    return 0 if core.is_empty else len(getattr(core, "geoms", [core]))
+
+
+@pytest.mark.parametrize("seed", [0, 4, 6, 12])
+def test_generated_rooms_have_no_one_cell_neck(seed: int) -> None:
+    # every cell of these rooms lies in a 1.5 m square, yet the solver once let two such squares
+    # meet through one 0.5 m cell (seed 0's studio room around its bathroom): an agent could not
+    # cross its own room
+    from mansion.eval.realism import bench_case
+
+    kind, floors, text = bench_case(seed)
+    b = mansion.generate_building(text, building_type=kind, floors=min(floors, 3), seed=seed)
+    for f in b.floors:
+        cores = {n.id for n in f.graph.nodes if n.is_core}
+        for room in f.layout.rooms:
+            if room.id not in cores:
+                assert passable_parts(Polygon(room.polygon, room.holes), 1.0) == 1, (seed, f.index, room.id)
+
+
+def test_generation_without_width_rules_and_bad_widths() -> None:
+    b = mansion.generate_building("a studio", building_type="studio", floors=1, seed=0, min_width=None)
+    assert all(n.min_width is None for f in b.floors for n in f.graph.nodes)
+    ruled = mansion.generate_building("a studio", building_type="studio", floors=1, seed=0)
+    assert any(n.min_width for f in ruled.floors for n in f.graph.nodes)
+    for bad in (0, -1.0, float("nan"), "wide", True):
+        with pytest.raises(mansion.InvalidInputError, match="min_width"):
+            mansion.generate_building("a studio", floors=1, seed=0, min_width=bad)  # type: ignore[arg-type]

@@ -11,7 +11,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from shapely.geometry import Polygon
+from shapely.geometry import Point, Polygon
 from typer.testing import CliRunner
 
 from mansion.building import generate_building
@@ -143,11 +143,8 @@ def test_every_building_type_gives_valid_scenes(seed: int, tmp_path: Path) -> No
     kind, floors = case(seed)
     building = generate_building(description(kind, floors), building_type=kind, floors=floors, seed=seed)
     manifest = write_scenes(building, tmp_path)
-    # nothing the loader refuses, no warning; the only errors: rooms behind the layout's 0.5 m
-    # necks (one solver cell, narrower than the agent), which the solver's fix removes
-    problems = validate_path(manifest)
-    assert [p for p in problems if not (p.rule == "navigable" or (
-        p.rule == "room-doors" and "strip narrower" in p.message))] == []
+    # nothing the loader refuses, no warning, every room reachable and whole for the agent
+    assert validate_path(manifest) == []
     scenes = build_scenes(building, objects=False)
     for house, floor in zip(scenes.houses, building.floors, strict=True):
         # every access edge of the graph is a door or an opening, and doors carry real assets
@@ -188,15 +185,8 @@ def _wall(house: dict[str, Any], wid: str) -> dict[str, Any]:
     return _first(house["walls"], id=wid)
 
 
-#: Errors about the robot's way through a floor; the golden villa still has rooms behind 0.5 m
-#: necks of its layout (one solver cell), which the solver's fix removes (issue 17).
-NAVIGATION = {"navigable", "room-doors"}
-
-
-def test_golden_house_loads_and_only_its_layout_necks_stop_the_robot(golden_house: dict[str, Any]) -> None:
-    problems = validate_house(golden_house)
-    assert [p for p in problems if p.rule not in NAVIGATION] == []
-    assert all("strip narrower" in p.message or p.rule == "navigable" for p in problems)
+def test_golden_house_is_valid_and_navigable(golden_house: dict[str, Any]) -> None:
+    assert validate_house(golden_house) == []
 
 
 def _loop() -> dict[str, Any]:
@@ -671,7 +661,10 @@ def test_object_blocking_a_doorway_makes_the_room_unreachable(golden_house: dict
 def test_object_on_the_spawn(golden_house: dict[str, Any]) -> None:
     h = copy.deepcopy(golden_house)
     spawn = h["metadata"]["agentPoses"]["default"]["position"]
-    obj = h["objects"][0]
+    # an object of the spawn's room (moved into another room it would be reported as misplaced)
+    room = next(r["id"] for r in h["rooms"] if Polygon(
+        [(p["x"], p["z"]) for p in r["floorPolygon"]]).covers(Point(spawn["x"], spawn["z"])))
+    obj = next(o for o in h["objects"] if o["room"] == room)
     obj["position"]["x"], obj["position"]["z"] = spawn["x"], spawn["z"]
     assert named(validate_house(h), "object-reach", "agentPoses.default")
 

@@ -89,7 +89,9 @@ def test_reset_observation_and_actions(office: Path) -> None:
     env = BuildingEnv(office, image=True)
     obs, info = env.reset(seed=1)
     assert env.observation_space.contains(obs)
-    assert obs["floor"] == 0 and obs["room"] == env.building.manifest.floors[0].hub
+    # the agent starts inside the front door (ProcTHOR's outside door: room0 == room1)
+    front = next(d for d in env.house(0)["doors"] if d["id"] == env.building.manifest.floors[0].entrance)
+    assert obs["floor"] == 0 and obs["room"] == front["room0"] == front["room1"]
     assert obs["image"].shape == (192, 192, 3) and obs["image"].dtype == np.uint8
     assert {lm["id"] for lm in obs["landmarks"]} == set(env.state.rooms)
     # the three action forms

@@ -9,6 +9,11 @@ Run after ``pip install .`` (or ``maturin develop --release``):
 
     python benches/python/bench_generate.py            # both parts
     python benches/python/bench_generate.py --quick    # seeds 0–19 only
+    python benches/python/bench_generate.py --widths   # the cost of the width rules (issue 14)
+
+``--widths`` generates every seed twice, back to back, with the generator's width rules and
+without any (``min_width=None``: the solver before issue 14), and reports both totals and their
+ratio; interleaving keeps the machine's noise out of the ratio.
 """
 
 from __future__ import annotations
@@ -19,6 +24,7 @@ import sys
 import time
 
 from mansion.building import generate_building
+from mansion.building.generate import MIN_CLEAR_WIDTH
 from mansion.eval.realism import BENCH_TYPES as TYPES, bench_case
 from mansion.exceptions import MansionError
 
@@ -59,6 +65,33 @@ def run_hundred(seeds: range) -> int:
     return len(failures)
 
 
+def run_widths(seeds: range) -> None:
+    """Total time of the seeds with and without width rules, interleaved."""
+    totals = {"with": 0.0, "without": 0.0}
+    ratios = []
+    for seed in seeds:
+        kind, floors = case(seed)
+        took = {}
+        for label, width in (("without", None), ("with", MIN_CLEAR_WIDTH)):
+            start = time.perf_counter()
+            try:
+                generate_building(
+                    description(kind, floors), building_type=kind, floors=floors, seed=seed, min_width=width
+                )
+            except MansionError as exc:
+                print(f"seed {seed} {label} width rules: {type(exc).__name__}: {exc}")
+            took[label] = time.perf_counter() - start
+            totals[label] += took[label]
+        ratios.append(took["with"] / max(took["without"], 1e-9))
+        print(f"seed {seed:3d} {kind:17s} {floors:2d} floors  without {took['without']:6.2f} s  "
+              f"with {took['with']:6.2f} s", flush=True)
+    print(
+        f"\n{len(ratios)} buildings: without width rules {totals['without']:.1f} s, with "
+        f"{totals['with']:.1f} s (total ratio {totals['with'] / totals['without']:.2f}x, "
+        f"median per building {statistics.median(ratios):.2f}x)"
+    )
+
+
 def run_office() -> None:
     times = []
     for seed in range(5):
@@ -74,7 +107,11 @@ def run_office() -> None:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="seeds 0-19 only")
+    parser.add_argument("--widths", action="store_true", help="time with and without width rules")
     args = parser.parse_args()
+    if args.widths:
+        run_widths(range(20) if args.quick else range(100))
+        return 0
     failures = run_hundred(range(20) if args.quick else range(100))
     run_office()
     return 1 if failures else 0

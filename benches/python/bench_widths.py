@@ -100,8 +100,8 @@ def main() -> None:
     plan = OfflinePlanner.plan_topology
     if args.no_widths:
         # the solver without width rules; rooms are still measured against the rules
-        gen.floor_settings = lambda cell_size: gen.SolverSettings()  # type: ignore[assignment]
-        OfflinePlanner.plan_topology = lambda self, p, i: gen._without_widths(plan(self, p, i))  # type: ignore[method-assign]
+        gen.floor_settings = lambda cell_size, width=None: gen.SolverSettings()  # type: ignore[assignment]
+        OfflinePlanner.plan_topology = lambda self, p, i: gen._widths_at_most(plan(self, p, i), None)  # type: ignore[method-assign]
     elif args.assign_widths:
         OfflinePlanner.plan_topology = lambda self, p, i: assign_widths(plan(self, p, i))  # type: ignore[method-assign]
     m = measure(range(*args.seeds), args.assign_widths)

@@ -551,6 +551,58 @@ pub fn hand_over_thin(
     moved
 }
 
+/// The first room with a width rule (two cells or more) whose 2 × 2 blocks do not form one
+/// edge-connected set, or None. Such a room has two parts that meet only through a neck one cell
+/// wide — every cell may still lie in a square of its rule, as two squares touching along one
+/// cell do — so an agent that needs two cells cannot walk from one part to the other. Blocks are
+/// named by their top-right cell; two blocks whose names are edge neighbours overlap in two
+/// cells, a passage two cells wide.
+pub fn necked_room(grid: &Grid, region: &Region, widths: &[u16], s: &mut Scratch) -> Option<Label> {
+    let w = grid.w;
+    let (x0, y0, x1, y1) = region.bbox;
+    let block = s.bump();
+    s.list.clear();
+    for y in (y0 + 1)..=y1 {
+        for c in (y * w + x0 + 1)..=(y * w + x1) {
+            let l = grid.cells[c];
+            if widths.get(l as usize).copied().unwrap_or(0) < 2 || !region.inside[c] {
+                continue;
+            }
+            let same = |n: usize| grid.cells[n] == l && region.inside[n];
+            if same(c - 1) && same(c - w) && same(c - w - 1) {
+                s.stamp[c] = block;
+                s.list.push(c);
+            }
+        }
+    }
+    // one flood per room from its first block; a room met again at an unvisited block is necked
+    let seen = s.bump();
+    s.donors.clear();
+    for i in 0..s.list.len() {
+        let start = s.list[i];
+        if s.stamp[start] != block {
+            continue;
+        }
+        let l = grid.cells[start];
+        if s.donors.contains(&l) {
+            return Some(l);
+        }
+        s.donors.push(l);
+        s.queue.clear();
+        s.queue.push(start);
+        s.stamp[start] = seen;
+        while let Some(c) = s.queue.pop() {
+            for n in [c - 1, c + 1, c - w, c + w] {
+                if s.stamp[n] == block && grid.cells[n] == l {
+                    s.stamp[n] = seen;
+                    s.queue.push(n);
+                }
+            }
+        }
+    }
+    None
+}
+
 /// Cap on width passes. Strips bounce between two rooms only in regions too tight for both
 /// rules, and the candidate filter rejects those anyway; a pass that finds no fewer thin cells
 /// than the one before ends the passes early.
@@ -754,6 +806,28 @@ mod tests {
             Some(false)
         );
         assert_eq!(s.thin.len(), 1);
+    }
+
+    #[test]
+    fn squares_touching_along_one_cell_are_a_neck() {
+        // room 1: two 3 × 3 squares sharing one column of cells at their corner (every cell lies
+        // in a 3 × 3 square of the room, yet the parts meet through one cell)
+        let rows = ["111222", "111222", "111222", "221112", "221112", "221112"];
+        let g = parse(&rows);
+        let r = region_all(&g);
+        let mut s = Scratch::new(g.cells.len());
+        let mut widths = vec![0u16; 10];
+        widths[1] = 3;
+        thin_cells(&g, &r, &widths, &mut s);
+        assert!(s.thin.is_empty(), "the width rule alone passes it");
+        assert_eq!(necked_room(&g, &r, &widths, &mut s), Some(1));
+        // an L of two-cell arms is one passable room; arms meeting in one cell are not
+        let g = parse(&["11222", "11222", "11111", "11111"]);
+        let r = region_all(&g);
+        widths[1] = 2;
+        assert_eq!(necked_room(&g, &r, &widths, &mut s), None);
+        let g = parse(&["11222", "11222", "22111", "22111"]);
+        assert_eq!(necked_room(&g, &region_all(&g), &widths, &mut s), Some(1));
     }
 
     #[test]

@@ -124,6 +124,7 @@ pub enum Reject {
     Disconnected(Label),
     Straddles(Label),
     TooNarrow(Label),
+    Necked(Label),
     Adjacency(Label, Label),
 }
 
@@ -142,6 +143,7 @@ impl Reject {
             Reject::Disconnected(l) => format!("room '{}' in several pieces", n(l)),
             Reject::Straddles(l) => format!("room '{}' straddles a fixed wall", n(l)),
             Reject::TooNarrow(l) => format!("room '{}' narrower than the minimum width", n(l)),
+            Reject::Necked(l) => format!("room '{}' in parts joined by a one-cell neck", n(l)),
             Reject::Adjacency(a, b) => format!("no shared wall between '{}' and '{}'", n(a), n(b)),
         }
     }
@@ -441,6 +443,11 @@ impl<'a> Prepared<'a> {
             // `s.thin` still holds the cells the last width pass could not fix
             let l = s.thin.first().map_or(self.spec.parent, |&c| grid.cells[c]);
             return Err(Reject::TooNarrow(l));
+        }
+        if self.width_rules {
+            if let Some(l) = cleanup::necked_room(&grid, &self.region, &self.widths, s) {
+                return Err(Reject::Necked(l));
+            }
         }
         let mut feats = energy::features(
             &grid,

@@ -7,9 +7,9 @@ their original's graph and layout. The finished building is checked
 (:func:`~mansion.building.checks.check_building`) before it is returned.
 
 A floor whose solve fails is retried with other solver seeds, then with its ``adjacent`` edges
-dropped, then (only for carried walls) without the carried walls, then without the rooms' own
-minimum widths (the floor-wide :data:`MIN_CLEAR_WIDTH` kept), then without any width rule; each
-relaxation is recorded on the floor. When every attempt fails, :class:`InfeasibleLayoutError`
+dropped, then (only for carried walls) without the carried walls, then with every width rule
+lowered to :data:`RELAXED_CLEAR_WIDTH`, then without any width rule; each relaxation is recorded on
+the floor. When every attempt fails, :class:`InfeasibleLayoutError`
 names the floor.
 
 The offline planner answers in milliseconds, so its floors are solved here one after another.
@@ -45,6 +45,7 @@ from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanne
 __all__ = [
     "ATTEMPTS",
     "MIN_CLEAR_WIDTH",
+    "RELAXED_CLEAR_WIDTH",
     "copy_floor",
     "derived_seed",
     "finish_building",
@@ -56,12 +57,18 @@ __all__ = [
 ]
 
 #: Solver attempts per floor: two plain seeds, then without adjacent edges, then without walls,
-#: then without the rooms' own minimum widths, then without the floor-wide one.
+#: then with the widths lowered to :data:`RELAXED_CLEAR_WIDTH`, then without width rules.
 ATTEMPTS = 6
 
-#: Narrowest part any room (corridors and the hub included) may have, in metres: an agent of
-#: radius 0.25–0.3 m needs 0.6 m clear, which on the 0.5 m grid rounds up to two cells.
-MIN_CLEAR_WIDTH = 1.0
+#: Narrowest part any room (corridors and the hub included) may have, in metres: three cells of
+#: the 0.5 m grid. Two cells (1.0 m) let an agent of radius 0.25–0.3 m through, but a room 1.0 m
+#: wide holds no usable 1 m square and counts as a sliver (issue 14); measured on seeds 0–27 with
+#: the planners' room widths capped here: slivers 24.7 % at 1.0 m, 2.1 % at 1.5 m.
+MIN_CLEAR_WIDTH = 1.5
+
+#: The width every rule falls to when a floor cannot be laid out at :data:`MIN_CLEAR_WIDTH`: still
+#: wide enough for the agent.
+RELAXED_CLEAR_WIDTH = 1.0
 
 Progress = Callable[[str, int, int], None]
 
@@ -108,12 +115,15 @@ def solver_options(
     batch: int = 100,
     min_contact: float = 1.0,
     weights: EnergyWeights | None = None,
+    min_width: float | None = MIN_CLEAR_WIDTH,
 ) -> dict[str, Any]:
-    """The keyword arguments of :func:`mansion.solve_floor` for a generated building's floors."""
+    """The keyword arguments of :func:`mansion.solve_floor` for a generated building's floors
+    (``min_width``: the floor-wide minimum clear width in metres; None: no width rule at all,
+    the rooms' own dropped too)."""
     return {
         "cell_size": cell_size, "retries": retries, "batch": batch, "min_contact": min_contact,
         "weights": weights if weights is not None else generated_weights(),
-        "settings": floor_settings(cell_size),
+        "settings": floor_settings(cell_size, min_width) if min_width is not None else None,
     }
 
 
@@ -121,15 +131,20 @@ def _without_adjacent(graph: RoomGraph) -> RoomGraph:
     return RoomGraph(nodes=graph.nodes, edges=[e for e in graph.edges if e.kind == "access"])
 
 
-def _without_widths(graph: RoomGraph) -> RoomGraph:
-    nodes = [n.model_copy(update={"min_width": None}) for n in graph.nodes]
+def _widths_at_most(graph: RoomGraph, width: float | None) -> RoomGraph:
+    """``graph`` with every room's own minimum width lowered to ``width`` (None: removed)."""
+    nodes = [
+        n if n.min_width is None or (width is not None and n.min_width <= width)
+        else n.model_copy(update={"min_width": width})
+        for n in graph.nodes
+    ]
     return RoomGraph(nodes=nodes, edges=graph.edges)
 
 
-def floor_settings(cell_size: float) -> SolverSettings:
-    """The solver settings of generated floors: the floor-wide minimum width
-    (:data:`MIN_CLEAR_WIDTH`) in cells of ``cell_size``."""
-    return SolverSettings(min_width=max(1, math.ceil(MIN_CLEAR_WIDTH / cell_size - 1e-6)))
+def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSettings:
+    """The solver settings of generated floors: the floor-wide minimum width (``width`` m,
+    :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``."""
+    return SolverSettings(min_width=max(1, math.ceil(width / cell_size - 1e-6)))
 
 
 def _solve(
@@ -141,6 +156,8 @@ def _solve(
     solver: dict[str, Any],
 ) -> tuple[FloorLayout, RoomGraph, Footprint, int, int, list[str]]:
     errors = []
+    if solver.get("settings") is None:
+        graph = _widths_at_most(graph, None)  # no width rules asked for
     for attempt in range(ATTEMPTS):
         relax: list[str] = []
         g, fp, sp = graph, footprint, planner
@@ -152,12 +169,15 @@ def _solve(
             sp = None
             relax.append("carried walls dropped")
         options = solver
-        if attempt >= 4 and any(n.min_width is not None for n in graph.nodes):
-            g = _without_widths(g)
-            relax.append("room minimum widths dropped")
+        if attempt == 4 and solver.get("settings") is not None:
+            g = _widths_at_most(g, RELAXED_CLEAR_WIDTH)
+            cells = floor_settings(solver.get("cell_size", 0.5), RELAXED_CLEAR_WIDTH).min_width
+            options = {**solver, "settings": solver["settings"].model_copy(update={"min_width": cells})}
+            relax.append(f"minimum clear widths lowered to {RELAXED_CLEAR_WIDTH:g} m")
         if attempt >= 5 and solver.get("settings") is not None:
+            g = _widths_at_most(g, None)
             options = {**solver, "settings": solver["settings"].model_copy(update={"min_width": None})}
-            relax.append(f"minimum clear width of {MIN_CLEAR_WIDTH:g} m dropped")
+            relax.append("minimum clear widths dropped")
         rng_seed = derived_seed(seed, "floor", index, attempt)
         try:
             layout = solve_floor(g, fp, seed_planner=sp, rng_seed=rng_seed, **options)
@@ -186,6 +206,7 @@ def generate_building(
     batch: int = 100,
     min_contact: float = 1.0,
     weights: EnergyWeights | None = None,
+    min_width: float | None = MIN_CLEAR_WIDTH,
     progress: Progress | None = None,
 ) -> Building:
     """Generate a checked multi-floor building (plans only) from a plain-language description.
@@ -211,6 +232,10 @@ def generate_building(
             Measured over the offline hundred (seeds 0–99): the paper's weights solve all 100
             buildings, the T2D-tuned ones fail 2; mean room area error over seeds 0–39 is 17.2 %
             against 19.8 %.
+        min_width: the narrowest clear width (m) any room may have, floor-wide; the rooms'
+            own widths from the design table (up to :data:`~mansion.planning.topology.MAX_NODE_WIDTH`)
+            come on top. None: no width rule at all (the solver as the paper describes it; rooms
+            then keep slivers and one-cell necks).
         progress: called as ``progress(message, done, total)`` as floors are solved.
 
     Raises:
@@ -221,6 +246,11 @@ def generate_building(
     """
     if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
         raise InvalidInputError(f"seed must be an integer >= 0, got {seed!r}")
+    if min_width is not None and (
+        isinstance(min_width, bool) or not isinstance(min_width, (int, float))
+        or not math.isfinite(min_width) or min_width <= 0
+    ):
+        raise InvalidInputError(f"min_width must be a positive number of metres or None, got {min_width!r}")
     if not isinstance(description, str) or not description.strip():
         raise InvalidInputError("the description is empty; say what to build")
     plan = get_planner(planner)
@@ -228,7 +258,7 @@ def generate_building(
         floors=floors, area=area, outline=_footprint_outline(footprint),
         max_floor_area=max_floor_area, building_type=building_type, load_bearing=load_bearing,
     )
-    solver = solver_options(cell_size, retries, batch, min_contact, weights)
+    solver = solver_options(cell_size, retries, batch, min_contact, weights, min_width)
     if not isinstance(plan, OfflinePlanner):
         # LLM planners wait on the network: the LangGraph pipeline fans the floors out. It is
         # imported only here so the offline path never loads langgraph.

@@ -25,12 +25,14 @@ __all__ = ["MAX_NODE_WIDTH", "floor_graph", "min_width", "with_min_widths"]
 #: A room's minimum width never asks for a squarer room than this (width² · aspect ≤ area), so a
 #: room squeezed to its minimum area can still be laid out.
 _MIN_ASPECT = 1.5
-#: The widest clear width a node asks of the solver (a bedroom's); wider rooms (classrooms 5.4 m)
-#: keep their shape through their area and the solver's compactness. Measured with the solver's
-#: per-room width rules (issue 14, offline hundred): asking the table's full widths made half the
-#: floors fail four attempts and drop every width rule (slivers 18.1 %, 526 s); capped at 3 m,
-#: 12.3 % and 301 s.
-MAX_NODE_WIDTH = 3.0
+#: The widest clear width a node asks of the solver; wider rooms (bedrooms 2.15 m, classrooms
+#: 5.4 m) keep their shape through their area and the solver's compactness and aspect terms.
+#: Measured with the solver's width rules (issue 14) on benchmark seeds 0–27 with a floor-wide
+#: 1.5 m: nodes capped at 1.5 m take 8.7 s and relax 6 of 100 floors; at 2.0 m, 29 s and 25
+#: floors (slivers 2.1 % / 2.7 %, rooms below their table width 35 % / 31 %); corridors at their
+#: building type's full width (up to 2.4 m), 12.4 s and 14 floors relaxed (slivers 5.5 %); the
+#: table's full widths made half the floors fail and drop every rule.
+MAX_NODE_WIDTH = 1.5
 
 
 def min_width(room_type: str, area: float, building_type: str | None) -> float:
@@ -39,6 +41,7 @@ def min_width(room_type: str, area: float, building_type: str | None) -> float:
     this area can have nor more than :data:`MAX_NODE_WIDTH`."""
     width = room_design(room_type).min_width
     if design_key(room_type) in CORRIDOR_TYPES:
+        # corridors are planned as length × width (their area) at their building type's width
         width = max(width, corridor_width(building_type))
     return round(min(width, MAX_NODE_WIDTH, math.sqrt(area / _MIN_ASPECT)), 2)
 
