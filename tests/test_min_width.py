@@ -85,11 +85,15 @@ def test_width_ruled_layouts_tile_the_free_region(seed: int, width: float) -> No
         assert "rejected" in str(e)
         return
     check_layout(layout, footprint, mask)
+    # rounds no candidate passed were cut again with their rules lowered to 1.0 m
+    relaxed = {x for r in layout.diagnostics.rounds if r.widths_relaxed for x in (r.parent, *r.children)}
     for room in layout.rooms:
         node = next(n for n in ruled.nodes if n.id == room.id)
         cells = node.area / CELL**2
         # the rule is capped at the side of the largest square the room's area holds
         rule = min(width, max(1, int(cells**0.5)) * CELL)
+        if room.id in relaxed:
+            rule = min(rule, 1.0)
         assert narrow_area(Polygon(room.polygon, room.holes), rule) < SLACK, room.id
 
 

@@ -86,6 +86,7 @@ LAYOUT_JSON: dict[str, Any] = {
                 "children": ["office"],
                 "retry": 0,
                 "fallback": False,
+                "widths_relaxed": False,
                 "candidates": 100,
                 "rejected": {"topology": 12, "disconnected": 3},
                 "energy": {

@@ -171,7 +171,7 @@ def test_planned_rooms_respect_the_table(seed: int) -> None:
     b = generate_building(text, building_type=kind, floors=min(floors, 3), seed=seed)
     for floor in b.floors:
         program = b.program.floor_program(floor.index)
-        relaxed = [r for r in floor.relaxations if "clear widths" in r]
+        relaxed = [r for r in floor.relaxations if "clear widths" in r and "while cutting" not in r]
         for node in floor.graph.nodes:
             if node.is_core:
                 assert node.min_width is None

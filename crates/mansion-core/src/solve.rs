@@ -151,6 +151,10 @@ pub struct RoundOut {
     pub children: Vec<String>,
     pub retry: Option<usize>,
     pub fallback: bool,
+    /// No candidate passed the round's width rules: they were lowered (to the floor-wide rule,
+    /// then to [`RELAXED_WIDTH`]) for this round.
+    #[serde(default)]
+    pub widths_relaxed: bool,
     pub candidates: usize,
     pub rejected: BTreeMap<String, usize>,
     pub energy: EnergyOut,
@@ -561,6 +565,10 @@ const MAX_RECUTS: u64 = 3;
 const MAX_BACKTRACKS: usize = 8;
 
 /// Index of the round whose children include `label`.
+/// Width (m) a round's rules fall to when it cannot be cut otherwise: an agent of radius 0.3 m
+/// still passes.
+pub const RELAXED_WIDTH: f64 = 1.0;
+
 fn creator(rounds: &[(Label, Vec<Label>)], label: Label) -> Option<usize> {
     rounds.iter().position(|(_, cs)| cs.contains(&label))
 }
@@ -827,6 +835,35 @@ pub fn solve_floor(
             }
             Err(e) => Err(e),
         };
+        // A round no candidate passes under its width rules is cut again with the rules above
+        // the floor-wide one lowered to it, then with every rule lowered to a passage an agent
+        // still fits (RELAXED_WIDTH), before anything is undone: only that round's rooms give
+        // up width, not the whole floor.
+        let round_labels = || std::iter::once(*parent).chain(children.iter().copied());
+        let rule = |l: Label| cut_opts.widths.get(l as usize).copied().unwrap_or(0);
+        let passage = ((RELAXED_WIDTH / opts.cell_size) - 1e-9).ceil().max(2.0) as usize;
+        let mut steps: Vec<usize> = Vec::new();
+        let floor_rule = opts.min_width.unwrap_or(0);
+        if floor_rule > passage && round_labels().any(|l| rule(l) > floor_rule) {
+            steps.push(floor_rule);
+        }
+        if round_labels().any(|l| rule(l) > passage) {
+            steps.push(passage);
+        }
+        let mut widths_relaxed = false;
+        let mut result = result;
+        for (k, &cap) in steps.iter().enumerate() {
+            let Err(e) = result else { break };
+            let mut narrow = cut_opts.clone();
+            for l in round_labels() {
+                if let Some(w) = narrow.widths.get_mut(l as usize) {
+                    *w = (*w).min(cap);
+                }
+            }
+            let sub = stream + ((2 + k as u64) << 32);
+            result = cut::cut(&grid, &floor.walls, &spec, &narrow, n, sub).map_err(|_| e);
+            widths_relaxed = result.is_ok();
+        }
         let outcome = match result {
             Ok(o) => o,
             Err(e) => {
@@ -865,6 +902,7 @@ pub fn solve_floor(
                 .collect(),
             retry: outcome.retry,
             fallback: outcome.fallback,
+            widths_relaxed,
             candidates: outcome.candidates,
             rejected: outcome.rejected,
             energy: EnergyOut {

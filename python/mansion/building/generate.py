@@ -6,7 +6,9 @@ with the load-bearing walls of each floor carried into the footprint of the next
 their original's graph and layout. The finished building is checked
 (:func:`~mansion.building.checks.check_building`) before it is returned.
 
-A floor whose solve fails is retried with other solver seeds, then with its ``adjacent`` edges
+A cut round that no candidate passes under width rules wider than 1.0 m is cut again, by the
+solver, with that round's rules lowered to 1.0 m (recorded on the floor). A floor whose solve
+fails is retried with other solver seeds, then with its ``adjacent`` edges
 dropped, then (only for carried walls) without the carried walls, then with every width rule
 lowered to :data:`RELAXED_CLEAR_WIDTH`, then without any width rule; each relaxation is recorded on
 the floor. When every attempt fails, :class:`InfeasibleLayoutError`
@@ -184,6 +186,10 @@ def _solve(
         except InfeasibleLayoutError as exc:
             errors.append(f"attempt {attempt + 1}: {exc}")
             continue
+        relax += [
+            f"minimum clear widths lowered to {RELAXED_CLEAR_WIDTH:g} m while cutting {r.parent!r}"
+            for r in layout.diagnostics.rounds if r.widths_relaxed
+        ]
         return layout, g, fp, rng_seed, attempt + 1, relax
     raise InfeasibleLayoutError(
         f"floor {index} could not be laid out in {ATTEMPTS} attempts; " + " | ".join(errors[-2:])

@@ -153,6 +153,11 @@ class RoundDiagnostics(BaseModel):
         description="Index of the retry whose candidates won; None when the fallback won."
     )
     fallback: bool
+    widths_relaxed: bool = Field(
+        default=False,
+        description="No candidate met the round's width rules; for this round only they were "
+        "lowered to the floor-wide rule, then to 1.0 m (an agent still passes).",
+    )
     candidates: int = Field(description="Candidates grown in this round, over all retries.")
     rejected: dict[str, int] = Field(
         default_factory=dict, description="Candidates rejected, by reason."
