@@ -155,3 +155,17 @@ def test_generation_without_width_rules_and_bad_widths() -> None:
     for bad in (0, -1.0, float("nan"), "wide", True):
         with pytest.raises(mansion.InvalidInputError, match="min_width"):
             mansion.generate_building("a studio", floors=1, seed=0, min_width=bad)  # type: ignore[arg-type]
+
+
+def test_a_round_that_cannot_meet_its_widths_is_cut_again_with_them_lowered() -> None:
+    graph, footprint = office_floor()
+    ruled = with_widths(graph, room=2.0, hub=2.0)  # more than this small floor can give every room
+    args = {"cell_size": CELL, "retries": 3, "batch": 30, "rng_seed": 1}
+    with pytest.raises(InfeasibleLayoutError, match="narrower than the minimum width|vanished|neck"):
+        mansion.solve_floor(ruled, footprint, settings={"relax_widths": False}, **args)
+    layout = mansion.solve_floor(ruled, footprint, **args)  # relax_widths is the default
+    relaxed = [r for r in layout.diagnostics.rounds if r.widths_relaxed]
+    assert [r.parent for r in relaxed] == ["corridor"]
+    for room in layout.rooms:
+        # lowered to 1.0 m, not dropped: no part narrower than an agent's passage
+        assert narrow_area(Polygon(room.polygon, room.holes), 1.0) < SLACK, room.id

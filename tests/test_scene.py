@@ -128,6 +128,23 @@ def test_room_with_a_hole_is_cut_into_simple_parts() -> None:
     assert abs(sum(p.area for p in polys) - 32.0) < 1e-9
 
 
+def test_cuts_leave_parts_an_agent_can_walk() -> None:
+    # a supermarket's corridor (benchmark seed 79, floor 1) around two rooms; its shortest cut
+    # left a part whose two lobes met through a 0.5 m gap beside a stair core
+    ring = [(2.5, 9.0), (19.0, 9.0), (19.0, 15.0), (16.0, 15.0), (16.0, 21.0), (9.0, 21.0), (9.0, 16.5),
+            (4.5, 16.5), (4.5, 21.0), (3.0, 21.0), (3.0, 18.0), (0.0, 18.0), (0.0, 12.0), (2.5, 12.0)]
+    holes = [[(4.0, 10.5), (4.0, 14.0), (8.0, 14.0), (8.0, 10.5)],
+             [(12.0, 10.5), (12.0, 14.5), (16.0, 14.5), (16.0, 10.5)]]
+    parts = split_room("corridor", ring, holes)
+    polys = [Polygon(p.ring) for p in parts]
+    assert abs(sum(p.area for p in polys) - Polygon(ring, holes).area) < 1e-9
+    for poly in polys:
+        # an agent 0.7 m across reaches every bit of every part, in one piece
+        core = poly.buffer(-0.35, join_style="mitre")
+        assert core.geom_type == "Polygon", poly
+        assert abs(core.buffer(0.35, join_style="mitre").intersection(poly).area - poly.area) < 1e-6
+
+
 # -- instantiation -----------------------------------------------------------------------------
 
 

@@ -31,6 +31,7 @@ def test_default_options_match_the_binding_contract() -> None:
         "seed_separation": 2.0,
         "fallback_samples": 400,
         "min_width": None,
+        "relax_widths": True,
         "growth": "balanced",
     }
 

@@ -66,6 +66,9 @@ pub struct SolveOptions {
     pub seed_separation: f64,
     pub fallback_samples: usize,
     pub min_width: Option<usize>,
+    /// A round no candidate passes under its width rules is cut again with them lowered (see
+    /// [`RoundOut::widths_relaxed`]) instead of failing at once.
+    pub relax_widths: bool,
     /// See [`CutOptions::exhaustive`].
     pub exhaustive: bool,
     /// See [`CutOptions::growth`].
@@ -89,6 +92,7 @@ impl Default for SolveOptions {
             seed_separation: c.seed_separation,
             fallback_samples: c.fallback_samples,
             min_width: None,
+            relax_widths: true,
             exhaustive: false,
             growth: c.growth,
         }
@@ -843,11 +847,12 @@ pub fn solve_floor(
         let rule = |l: Label| cut_opts.widths.get(l as usize).copied().unwrap_or(0);
         let passage = ((RELAXED_WIDTH / opts.cell_size) - 1e-9).ceil().max(2.0) as usize;
         let mut steps: Vec<usize> = Vec::new();
+        let relax = opts.relax_widths;
         let floor_rule = opts.min_width.unwrap_or(0);
-        if floor_rule > passage && round_labels().any(|l| rule(l) > floor_rule) {
+        if relax && floor_rule > passage && round_labels().any(|l| rule(l) > floor_rule) {
             steps.push(floor_rule);
         }
-        if round_labels().any(|l| rule(l) > passage) {
+        if relax && round_labels().any(|l| rule(l) > passage) {
             steps.push(passage);
         }
         let mut widths_relaxed = false;

@@ -6,8 +6,9 @@ with the load-bearing walls of each floor carried into the footprint of the next
 their original's graph and layout. The finished building is checked
 (:func:`~mansion.building.checks.check_building`) before it is returned.
 
-A cut round that no candidate passes under width rules wider than 1.0 m is cut again, by the
-solver, with that round's rules lowered to 1.0 m (recorded on the floor). A floor whose solve
+From the second attempt on, a cut round that no candidate passes under width rules wider than
+1.0 m is cut again, by the solver, with that round's rules lowered to 1.0 m (recorded on the
+floor). A floor whose solve
 fails is retried with other solver seeds, then with its ``adjacent`` edges
 dropped, then (only for carried walls) without the carried walls, then with every width rule
 lowered to :data:`RELAXED_CLEAR_WIDTH`, then without any width rule; each relaxation is recorded on
@@ -171,6 +172,10 @@ def _solve(
             sp = None
             relax.append("carried walls dropped")
         options = solver
+        if solver.get("settings") is not None and attempt == 0:
+            # the first attempt keeps every width rule: a round that cannot meet them fails the
+            # attempt, and a new seed often can; later attempts lower a failing round's rules
+            options = {**solver, "settings": solver["settings"].model_copy(update={"relax_widths": False})}
         if attempt == 4 and solver.get("settings") is not None:
             g = _widths_at_most(g, RELAXED_CLEAR_WIDTH)
             cells = floor_settings(solver.get("cell_size", 0.5), RELAXED_CLEAR_WIDTH).min_width

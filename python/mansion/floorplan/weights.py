@@ -88,6 +88,10 @@ class SolverSettings(BaseModel):
     - ``min_width``: narrowest allowed room, in cells, for every room of the floor (None: no
       limit); each room's own ``RoomNode.min_width`` (metres) adds to it, the larger rule wins,
       and a rule is capped at the side of the largest square the room's area can hold;
+    - ``relax_widths``: a cut round that no candidate passes under its width rules is cut again
+      with the rules above ``min_width`` lowered to it, then with every rule lowered to 1.0 m,
+      before the solver backtracks (recorded as the round's ``widths_relaxed``); False: the
+      round fails as any other;
     - ``growth``: side choice of the rectangular growth phase: ``"balanced"`` keeps each room
       centred on its seed until a wall or a neighbour stops it (so seeds act as centroids);
       ``"longest"`` grows the longest free side first, as in Lopes et al. (2010).
@@ -120,6 +124,7 @@ class SolverSettings(BaseModel):
     seed_separation: float = Field(default=2.0, ge=0.0)
     fallback_samples: int = Field(default=400, ge=0)
     min_width: int | None = Field(default=None, ge=1)
+    relax_widths: bool = True
     growth: Literal["balanced", "longest"] = "balanced"
 
     @model_validator(mode="after")

@@ -1,8 +1,9 @@
 """Rooms with holes cut into simple parts: AI2-THOR floor polygons cannot have holes.
 
 A corridor that runs around a block of rooms, or a lobby wrapped around a core, is one room with a
-hole. We cut it along the line through one of the hole's edges (the shortest such cut), which
-opens the hole into a notch, until no part has a hole. The parts become rooms ``<room>|<k>`` of the house, joined by empty walls (open
+hole. We cut it along the line through one of the hole's edges (the shortest such cut that leaves
+no part in lobes joined by a passage narrower than an agent), which opens the hole into a notch,
+until no part has a hole. The parts become rooms ``<room>|<k>`` of the house, joined by empty walls (open
 connections), each recording the room it is ``part_of``.
 """
 
@@ -17,6 +18,9 @@ from shapely.ops import orient
 from mansion.exceptions import InvalidBuildingError
 
 __all__ = ["RoomPart", "split_room"]
+
+#: Narrowest passage (m) inside a part: an agent of radius 0.3 m keeping 0.05 m.
+PASSAGE = 0.7
 
 
 @dataclass(frozen=True)
@@ -35,6 +39,17 @@ def _pieces(geom: object) -> list[Polygon]:
     return [g for g in parts if isinstance(g, Polygon) and g.area > 1e-9]
 
 
+def _cramped(part: Polygon) -> bool:
+    """True when an agent cannot walk all of ``part``: lobes joined only through a passage
+    narrower than :data:`PASSAGE`, or a strip that narrow. A cut that leaves such a part would
+    cut its doors apart inside it, though the room as a whole connects them."""
+    core = part.buffer(-PASSAGE / 2, join_style="mitre")
+    lobes = _pieces(core)
+    if len(lobes) != 1:
+        return True
+    return part.area - core.buffer(PASSAGE / 2, join_style="mitre").intersection(part).area > 1e-6
+
+
 def _cut(poly: Polygon) -> list[Polygon]:
     hole = Polygon(poly.interiors[0])
     hx0, hy0, hx1, hy1 = hole.bounds
@@ -50,8 +65,9 @@ def _cut(poly: Polygon) -> list[Polygon]:
             if vertical
             else (box(x0 - 1, y0 - 1, x1 + 1, c), box(x0 - 1, c, x1 + 1, y1 + 1))
         )
-        options.append((length, [p for h in halves for p in _pieces(poly.intersection(h))]))
-    return min(options, key=lambda o: o[0])[1]
+        pieces = [p for h in halves for p in _pieces(poly.intersection(h))]
+        options.append((sum(map(_cramped, pieces)), length, pieces))
+    return min(options, key=lambda o: o[:2])[2]
 
 
 def split_room(room_id: str, outer: Sequence[Sequence[float]], holes: Sequence[Sequence[Sequence[float]]]) -> list[RoomPart]:
