@@ -308,6 +308,10 @@ def test_stairs(office: Path) -> None:
     env = BuildingEnv(office)
     env.reset()
     stair = next(c for c in env.building.cores_on(0) if c.kind == "stair")
+    # away from every stair landing first (the spawn may be next to one)
+    landings = [env.building.landing(c, 0).pose.position for c in env.building.cores_on(0) if c.kind == "stair"]
+    far = max(env.state.landmarks, key=lambda r: min(math.dist(env.state.landmarks[r], (p.x, p.z)) for p in landings))
+    assert env.GoToRoom(far).success
     fails(env, "TakeStairs", "Up", reason="not at a stair landing")
     assert env.GoToRoom(stair.id).success
     fails(env, "TakeStairs", "Down", reason="no floor below floor 0")
