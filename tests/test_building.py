@@ -265,7 +265,7 @@ def test_errors_are_typed_and_named(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 def test_a_floor_that_never_solves_is_named(monkeypatch: pytest.MonkeyPatch) -> None:
-    import mansion.building.generate as gen
+    import mansion.building.steps as steps
 
     calls = []
 
@@ -273,10 +273,10 @@ def test_a_floor_that_never_solves_is_named(monkeypatch: pytest.MonkeyPatch) -> 
         calls.append(kwargs["rng_seed"])
         raise InfeasibleLayoutError("no candidate survived")
 
-    monkeypatch.setattr(gen, "solve_floor", fail)
+    monkeypatch.setattr(steps, "solve_floor", fail)
     with pytest.raises(InfeasibleLayoutError, match="floor 0 could not be laid out in 6 attempts"):
         generate_building("a two-storey townhouse", seed=0)
-    assert len(calls) == gen.ATTEMPTS and len(set(calls)) == gen.ATTEMPTS
+    assert len(calls) == steps.ATTEMPTS and len(set(calls)) == steps.ATTEMPTS
 
 
 # -- a sample of the hundred ----------------------------------------------------------------------

@@ -13,6 +13,7 @@ from test_solver_properties import CELL, check_layout, instance
 
 import mansion
 import mansion.building.generate as gen
+import mansion.building.steps as steps
 from mansion import Footprint, InfeasibleLayoutError, RoomGraph
 
 #: Narrow parts smaller than this (m²) would be polygon rounding, not a strip (a cell is 0.25 m²).
@@ -107,7 +108,7 @@ def test_generated_floors_have_no_part_narrower_than_a_metre() -> None:
 
 
 def test_width_rules_are_relaxed_last_and_recorded(monkeypatch: pytest.MonkeyPatch) -> None:
-    real = gen.solve_floor
+    real = steps.solve_floor
     calls = []
 
     def widths_fail(graph: RoomGraph, footprint: Footprint, **kwargs: object) -> mansion.FloorLayout:
@@ -117,7 +118,7 @@ def test_width_rules_are_relaxed_last_and_recorded(monkeypatch: pytest.MonkeyPat
             raise InfeasibleLayoutError("every candidate was rejected: too narrow")
         return real(graph, footprint, **kwargs)
 
-    monkeypatch.setattr(gen, "solve_floor", widths_fail)
+    monkeypatch.setattr(steps, "solve_floor", widths_fail)
     b = gen.generate_building("a studio", building_type="studio", floors=1, seed=0)
     f = b.floors[0]
     assert f.attempts == gen.ATTEMPTS and calls[-1] is False

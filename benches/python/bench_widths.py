@@ -25,6 +25,7 @@ from typing import Any
 from shapely.geometry import Polygon
 
 import mansion.building.generate as gen
+import mansion.building.steps as steps
 from bench_generate import case, description
 from mansion.exceptions import MansionError
 from mansion.models import RoomGraph
@@ -100,8 +101,8 @@ def main() -> None:
     plan = OfflinePlanner.plan_topology
     if args.no_widths:
         # the solver without width rules; rooms are still measured against the rules
-        gen.floor_settings = lambda cell_size, width=None: gen.SolverSettings()  # type: ignore[assignment]
-        OfflinePlanner.plan_topology = lambda self, p, i: gen._widths_at_most(plan(self, p, i), None)  # type: ignore[method-assign]
+        steps.floor_settings = lambda cell_size, width=None: steps.SolverSettings()  # type: ignore[assignment]
+        OfflinePlanner.plan_topology = lambda self, p, i: steps._widths_at_most(plan(self, p, i), None)  # type: ignore[method-assign]
     elif args.assign_widths:
         OfflinePlanner.plan_topology = lambda self, p, i: assign_widths(plan(self, p, i))  # type: ignore[method-assign]
     m = measure(range(*args.seeds), args.assign_widths)

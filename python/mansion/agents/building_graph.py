@@ -26,7 +26,7 @@ import threading
 from collections.abc import Callable
 from typing import Annotated, Any, TypedDict
 
-from mansion.building.generate import (
+from mansion.building.steps import (
     copy_floor,
     derived_seed,
     finish_building,
