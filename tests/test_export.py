@@ -1,0 +1,310 @@
+"""``mansion export``: the building re-opened in trimesh (GLB) and pxr (USD) has every floor at its
+elevation, every wall, door, window and object once, real stairs, slab openings over the cores,
+and the building's footprint and height."""
+
+from __future__ import annotations
+
+import json
+import re
+import struct
+from collections import Counter
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from shapely.geometry import Polygon
+from shapely.geometry import box as rect
+from shapely.ops import unary_union
+from typer.testing import CliRunner
+
+from mansion.building import generate_building
+from mansion.cli import app
+from mansion.exceptions import InvalidInputError
+from mansion.scene import BuildingManifest, House, write_scenes
+
+trimesh = pytest.importorskip("trimesh")
+
+from mansion.export import FORMATS, building_model, export_building  # noqa: E402
+from mansion.export.cores import MAX_RISE, MIN_GOING, flight_node, plan_core  # noqa: E402
+from mansion.export.walls import SKIN  # noqa: E402
+
+runner = CliRunner()
+TOL = 1e-4
+
+
+@pytest.fixture(scope="module")
+def building(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A furnished three-storey office with a stair and two elevators."""
+    out = tmp_path_factory.mktemp("office")
+    b = generate_building("a three-storey office with two elevators", floors=3, seed=0)
+    write_scenes(b, out / "scenes")
+    return out
+
+
+def _houses(building: Path) -> tuple[BuildingManifest, dict[int, House]]:
+    manifest = BuildingManifest.load(building / "scenes" / "manifest.json")
+    return manifest, {f.index: House.load(building / "scenes" / f.house) for f in manifest.floors}
+
+
+def _expected_ids(house: House) -> Counter[tuple[str, str]]:
+    """(kind, id) of every element a floor must export once."""
+    out: Counter[tuple[str, str]] = Counter()
+    out.update(("wall", w.id) for w in house.walls if not w.empty)
+    out.update(("door", d.id) for d in house.doors)
+    out.update(("window", w.id) for w in house.windows)
+
+    def visit(objects: list[Any]) -> None:
+        for o in objects:
+            out[("object", o.id)] += 1
+            visit(o.children)
+
+    visit(house.objects)
+    return out
+
+
+def _glb_json(path: Path) -> dict[str, Any]:
+    data = path.read_bytes()
+    length = struct.unpack("<I", data[12:16])[0]
+    return json.loads(data[20 : 20 + length])
+
+
+@pytest.fixture(scope="module")
+def glb(building: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    out = tmp_path_factory.mktemp("glb") / "office.glb"
+    result = runner.invoke(app, ["export", str(building), "--format", "gltf", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    return out
+
+
+class Scene:
+    """What a test needs of a re-opened GLB: node → world matrix, extras, world-space mesh."""
+
+    def __init__(self, path: Path) -> None:
+        self.scene = trimesh.load(path, force="scene")
+        self.extras: dict[str, dict[str, Any]] = {}
+        for (_parent, child), data in self.scene.graph.transforms.edge_data.items():
+            self.extras[child] = data.get("metadata", {})
+
+    def names(self, kind: str) -> list[str]:
+        return [n for n, e in self.extras.items() if e.get("kind") == kind]
+
+    def matrix(self, name: str) -> np.ndarray:
+        return self.scene.graph.get(name)[0]
+
+    def mesh(self, name: str) -> Any:
+        geometry = self.scene.graph.get(name)[1]
+        return self.scene.geometry[geometry].copy().apply_transform(self.matrix(name))
+
+    def children(self, name: str) -> list[str]:
+        return list(self.scene.graph.transforms.children.get(name, []))
+
+
+@pytest.fixture(scope="module")
+def scene(glb: Path) -> Scene:
+    return Scene(glb)
+
+
+def _floor_of(name: str) -> int:
+    return int(re.match(r"floor_(\d+)/", name).group(1))  # type: ignore[union-attr]
+
+
+def _top_cover(meshes: list[Any], y: float) -> Any:
+    """The plan area covered by the upward faces of ``meshes`` lying at height ``y``."""
+    tris = []
+    for m in meshes:
+        up = (m.face_normals[:, 1] > 0.99) & (np.abs(m.triangles[:, :, 1].mean(axis=1) - y) < 1e-3)
+        tris += [Polygon(t[:, [0, 2]]) for t in m.triangles[up]]
+    return unary_union([t for t in tris if t.area > 1e-12])
+
+
+# -- GLB ---------------------------------------------------------------------------------------
+
+
+def test_glb_has_one_node_per_floor_at_its_elevation(building: Path, scene: Scene) -> None:
+    manifest, _ = _houses(building)
+    floors = sorted(scene.names("floor"))
+    assert floors == sorted(f"floor_{f.index}" for f in manifest.floors)
+    for f in manifest.floors:
+        m = scene.matrix(f"floor_{f.index}")
+        assert np.allclose(m[:3, 3], [0.0, f.elevation, 0.0], atol=TOL)
+        assert scene.extras[f"floor_{f.index}"]["elevation"] == pytest.approx(f.elevation)
+
+
+def test_glb_has_every_wall_door_window_and_object_once(building: Path, scene: Scene) -> None:
+    manifest, houses = _houses(building)
+    found: dict[int, Counter[tuple[str, str]]] = {f.index: Counter() for f in manifest.floors}
+    for name, extras in scene.extras.items():
+        if extras.get("kind") in ("wall", "door", "window", "object"):
+            found[_floor_of(name)][(extras["kind"], extras["id"])] += 1
+    for k, house in houses.items():
+        expected = _expected_ids(house)
+        assert found[k] == expected, f"floor {k}: {set(found[k]) ^ set(expected)}"
+        assert set(found[k].values()) == {1}
+    # every object node carries its asset id; every room is a node
+    for name in scene.names("object"):
+        assert scene.extras[name]["assetId"]
+    for k, house in houses.items():
+        rooms = {scene.extras[n]["id"] for n in scene.names("room") if _floor_of(n) == k}
+        assert rooms == {r.id for r in house.rooms}
+
+
+def test_glb_walls_have_their_door_and_window_holes_cut(building: Path, scene: Scene) -> None:
+    _, houses = _houses(building)
+    checked = 0
+    for k, house in houses.items():
+        holes: dict[str, float] = {}
+        for h in [*house.doors, *house.windows]:
+            lo, hi = h.hole_polygon
+            for wid in {h.wall0, h.wall1}:
+                holes[wid] = holes.get(wid, 0.0) + (hi.x - lo.x) * (hi.y - lo.y)
+        for wall in house.walls:
+            if wall.empty:
+                continue
+            (x0, z0), (x1, z1) = wall.segment()
+            height = max(p.y for p in wall.polygon) - min(p.y for p in wall.polygon)
+            area = float(np.hypot(x1 - x0, z1 - z0)) * height - holes.get(wall.id, 0.0)
+            mesh = scene.mesh(f"floor_{k}/{wall.id}")
+            mesh.merge_vertices()
+            assert mesh.is_watertight
+            assert mesh.volume == pytest.approx(area * SKIN, rel=1e-4), wall.id  # GLB stores float32
+            checked += wall.id in holes
+    assert checked > 0
+
+
+def _flights(scene: Scene) -> list[str]:
+    return scene.names("flight")
+
+
+def test_glb_stairs_climb_one_floor_per_flight_in_code_steps(building: Path, scene: Scene) -> None:
+    manifest, _ = _houses(building)
+    floors = {f.index: f for f in manifest.floors}
+    stairs = [c for c in manifest.cores if c.kind == "stair"]
+    assert stairs
+    for core in stairs:
+        served = sorted(core.floors)
+        names = sorted(n for n in _flights(scene) if scene.extras[n]["core"] == core.id)
+        assert len(names) == len(served) - 1
+        for (lower, upper), name in zip(zip(served, served[1:], strict=False), names, strict=True):
+            assert (scene.extras[name]["from_floor"], scene.extras[name]["to_floor"]) == (lower, upper)
+            assert floors[upper].elevation - floors[lower].elevation == pytest.approx(floors[lower].height)
+            steps = sorted((c for c in scene.children(name) if scene.extras[c]["kind"] == "step"))
+            meshes = [scene.mesh(s) for s in steps]
+            tops = [floors[lower].elevation] + [m.bounds[1][1] for m in meshes] + [floors[upper].elevation]
+            rises = np.diff(tops)
+            landings = {round(scene.mesh(c).bounds[1][1], 6) for c in scene.children(name) if scene.extras[c]["kind"] == "landing"}
+            # a turning flight rises onto its half landing and from it: that riser is in the
+            # landing's height, not between two treads.
+            if landings:
+                (mid,) = landings
+                tops = sorted([*tops, mid])
+                rises = np.diff(tops)
+            assert np.all(rises > 0)
+            assert np.all(rises <= MAX_RISE + 1e-9)
+            assert np.allclose(rises, rises[0])
+            assert sum(rises) == pytest.approx(floors[lower].height)
+            for m in meshes:
+                going = min(m.extents[0], m.extents[2])
+                assert going >= MIN_GOING - 1e-9
+                # inside the core's box
+                assert m.bounds[0][0] >= core.x[0] - TOL and m.bounds[1][0] <= core.x[1] + TOL
+                assert m.bounds[0][2] >= core.z[0] - TOL and m.bounds[1][2] <= core.z[1] + TOL
+
+
+def test_glb_slabs_open_over_every_core_and_close_under_it(building: Path, scene: Scene) -> None:
+    manifest, _ = _houses(building)
+    floors = {f.index: f for f in manifest.floors}
+    assert {c.kind for c in manifest.cores} == {"stair", "elevator"}
+    for core in manifest.cores:
+        box = rect(core.x[0], core.z[0], core.x[1], core.z[1])
+        served = sorted(core.floors)
+        for k in served:
+            rooms = [scene.mesh(n) for n in scene.names("room") if _floor_of(n) == k and scene.scene.graph.get(n)[1]]
+            cover = _top_cover(rooms, floors[k].elevation).intersection(box)
+            if k == served[0]:
+                assert cover.area == pytest.approx(box.area, rel=1e-6), f"{core.id} has no floor at {k}"
+            elif core.kind == "elevator":
+                assert cover.area < 1e-6, f"{core.id}: the slab of floor {k} closes the shaft"
+            else:
+                # every tread of the flight arriving here lies under the opening
+                (arriving,) = [n for n in _flights(scene) if scene.extras[n]["core"] == core.id and scene.extras[n]["to_floor"] == k]
+                for step in scene.children(arriving):
+                    b = scene.mesh(step).bounds
+                    assert cover.intersection(rect(b[0][0], b[0][2], b[1][0], b[1][2])).area < 1e-6
+                assert cover.area < box.area - 1.0
+    for core in manifest.cores:
+        if core.kind == "elevator":
+            car = scene.mesh(f"floor_{min(core.floors)}/{core.id}/car")
+            assert box_contains(core, car.bounds)
+
+
+def box_contains(core: Any, bounds: np.ndarray) -> bool:
+    return bool(
+        bounds[0][0] >= core.x[0] - TOL and bounds[1][0] <= core.x[1] + TOL
+        and bounds[0][2] >= core.z[0] - TOL and bounds[1][2] <= core.z[1] + TOL
+    )
+
+
+def test_glb_bounds_are_the_footprint_and_height(building: Path, scene: Scene) -> None:
+    manifest, houses = _houses(building)
+    outline = unary_union([Polygon([(p.x, p.z) for p in r.floor_polygon]) for h in houses.values() for r in h.rooms])
+    x0, z0, x1, z1 = outline.bounds
+    top = max(manifest.floors, key=lambda f: f.index)
+    ground = min(manifest.floors, key=lambda f: f.index)
+    lo, hi = scene.scene.bounds
+    # walls are skins on their visible side: outside twins stand SKIN beyond the footprint
+    assert lo[0] == pytest.approx(x0 - SKIN, abs=TOL) and hi[0] == pytest.approx(x1 + SKIN, abs=TOL)
+    assert lo[2] == pytest.approx(z0 - SKIN, abs=TOL) and hi[2] == pytest.approx(z1 + SKIN, abs=TOL)
+    assert hi[1] == pytest.approx(top.elevation + top.height, abs=TOL)
+    assert lo[1] == pytest.approx(-(ground.height - ground.ceiling_height), abs=TOL)
+
+
+def test_glb_is_deterministic_and_coloured(building: Path, glb: Path, tmp_path: Path) -> None:
+    again = export_building(building, "gltf", tmp_path / "again.glb")
+    assert again.read_bytes() == glb.read_bytes()
+    tree = _glb_json(glb)
+    colours = {tuple(m["pbrMetallicRoughness"]["baseColorFactor"]) for m in tree["materials"]}
+    assert len(colours) >= 5
+    assert any(m.get("alphaMode") == "BLEND" for m in tree["materials"])  # glass
+
+
+# -- stairs on their own -----------------------------------------------------------------------
+
+
+def test_a_short_core_gets_a_turning_flight_within_the_step_rules() -> None:
+    plan = plan_core("stair_1", "stair", (0.0, 0.0, 4.0, 3.0), door=(2.0, 0.0))
+    node, opening = flight_node(plan, 3.3, 0, 1, "floor_0")
+    assert node.info["turns"] == 1
+    tops = sorted({round(float(c.mesh[0][:, 1].max()), 9) for c in node.children})
+    rises = np.diff([0.0, *tops, 3.3])
+    assert np.all(rises <= MAX_RISE + 1e-9) and np.allclose(rises, rises[0])
+    for c in node.children:
+        if c.kind == "step":
+            ext = c.mesh[0].max(axis=0) - c.mesh[0].min(axis=0)
+            assert min(ext[0], ext[2]) >= MIN_GOING - 1e-9
+    # the opening leaves a floor landing by the door (z = 0 side) in the box
+    assert rect(0.0, 0.0, 4.0, 3.0).difference(opening).area > 0.5
+    with pytest.raises(InvalidInputError, match="too short"):
+        flight_node(plan_core("s", "stair", (0.0, 0.0, 2.0, 1.5), None), 3.3, 0, 1, "floor_0")
+
+
+@pytest.mark.parametrize("door", [(3.0, 0.0), (3.0, 3.0), (0.0, 1.5), (6.0, 1.5)])
+def test_a_straight_flight_leaves_floor_in_front_of_the_door(door: tuple[float, float]) -> None:
+    plan = plan_core("stair_1", "stair", (0.0, 0.0, 6.0, 3.0), door=door)
+    node, opening = flight_node(plan, 3.3, 0, 1, "floor_0")
+    assert node.info["turns"] == 0
+    # half a metre of floor at least between the door and the opening
+    assert opening.distance(Polygon.from_bounds(door[0], door[1], door[0], door[1]).buffer(0.01)) > 0.5 - 0.01
+
+
+# -- CLI ---------------------------------------------------------------------------------------
+
+
+def test_export_cli_errors_are_clear(building: Path, tmp_path: Path) -> None:
+    bad = runner.invoke(app, ["export", str(tmp_path / "missing"), "--out", str(tmp_path / "x.glb")])
+    assert bad.exit_code == 2 and "not a building folder" in bad.output
+    wrong = runner.invoke(app, ["export", str(building), "--format", "gltf", "--out", str(tmp_path / "x.usd")])
+    assert wrong.exit_code == 2 and ".glb" in wrong.output
+    unknown = runner.invoke(app, ["export", str(building), "--format", "obj", "--out", str(tmp_path / "x.obj")])
+    assert unknown.exit_code == 2 and "gltf" in unknown.output
+    assert set(FORMATS) >= {"gltf", "usd"}
