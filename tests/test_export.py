@@ -69,15 +69,7 @@ def _glb_json(path: Path) -> dict[str, Any]:
     return json.loads(data[20 : 20 + length])
 
 
-@pytest.fixture(scope="module")
-def glb(building: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("glb") / "office.glb"
-    result = runner.invoke(app, ["export", str(building), "--format", "gltf", "--out", str(out)])
-    assert result.exit_code == 0, result.output
-    return out
-
-
-class Scene:
+class GlbReader:
     """What a test needs of a re-opened GLB: node → world matrix, extras, world-space mesh."""
 
     def __init__(self, path: Path) -> None:
@@ -92,6 +84,9 @@ class Scene:
     def matrix(self, name: str) -> np.ndarray:
         return self.scene.graph.get(name)[0]
 
+    def has_mesh(self, name: str) -> bool:
+        return self.scene.graph.get(name)[1] is not None
+
     def mesh(self, name: str) -> Any:
         geometry = self.scene.graph.get(name)[1]
         return self.scene.geometry[geometry].copy().apply_transform(self.matrix(name))
@@ -99,10 +94,91 @@ class Scene:
     def children(self, name: str) -> list[str]:
         return list(self.scene.graph.transforms.children.get(name, []))
 
+    def bounds(self) -> np.ndarray:
+        return np.asarray(self.scene.bounds)
+
+
+class UsdReader:
+    """The same questions asked of a USD stage opened with pxr; nodes are found by the name in
+    their prims' ``customData["mansion"]``."""
+
+    def __init__(self, path: Path) -> None:
+        from pxr import Usd
+
+        self.stage = Usd.Stage.Open(str(path))
+        self.prims: dict[str, Any] = {}
+        self.extras: dict[str, dict[str, Any]] = {}
+        for prim in self.stage.Traverse():
+            data = prim.GetCustomDataByKey("mansion")
+            if data:
+                assert data["name"] not in self.prims, f"{data['name']} twice"
+                self.prims[data["name"]] = prim
+                self.extras[data["name"]] = dict(data)
+
+    def names(self, kind: str) -> list[str]:
+        return [n for n, e in self.extras.items() if e.get("kind") == kind]
+
+    def _world(self, prim: Any) -> np.ndarray:
+        from pxr import Usd, UsdGeom
+
+        # Gf matrices act on row vectors: transpose to the column convention trimesh uses.
+        return np.array(UsdGeom.Xformable(prim).ComputeLocalToWorldTransform(Usd.TimeCode.Default())).T
+
+    def matrix(self, name: str) -> np.ndarray:
+        return self._world(self.prims[name])
+
+    def _mesh_prim(self, name: str) -> Any:
+        prim = self.prims[name]
+        return prim if prim.GetTypeName() == "Mesh" else prim.GetChild("mesh")
+
+    def has_mesh(self, name: str) -> bool:
+        return bool(self._mesh_prim(name))
+
+    def mesh(self, name: str) -> Any:
+        from pxr import UsdGeom
+
+        prim = self._mesh_prim(name)
+        geom = UsdGeom.Mesh(prim)
+        points = np.array(geom.GetPointsAttr().Get(), float)
+        faces = np.array(geom.GetFaceVertexIndicesAttr().Get(), int).reshape(-1, 3)
+        assert set(geom.GetFaceVertexCountsAttr().Get()) == {3}
+        return trimesh.Trimesh(points, faces, process=False).apply_transform(self._world(prim))
+
+    def children(self, name: str) -> list[str]:
+        return [c.GetCustomDataByKey("mansion")["name"] for c in self.prims[name].GetChildren() if c.GetCustomDataByKey("mansion")]
+
+    def bounds(self) -> np.ndarray:
+        from pxr import Usd, UsdGeom
+
+        cache = UsdGeom.BBoxCache(Usd.TimeCode.Default(), [UsdGeom.Tokens.default_])
+        r = cache.ComputeWorldBound(self.stage.GetDefaultPrim()).ComputeAlignedRange()
+        return np.array([list(r.GetMin()), list(r.GetMax())])
+
+
+FILES = {"gltf": "office.glb", "usd": "office.usda"}
+
 
 @pytest.fixture(scope="module")
-def scene(glb: Path) -> Scene:
-    return Scene(glb)
+def exported(building: Path, tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    """The building written by the CLI in every format."""
+    folder = tmp_path_factory.mktemp("exported")
+    out = {}
+    for fmt, name in FILES.items():
+        out[fmt] = folder / name
+        result = runner.invoke(app, ["export", str(building), "--format", fmt, "--out", str(out[fmt])])
+        assert result.exit_code == 0, result.output
+    return out
+
+
+@pytest.fixture(scope="module", params=sorted(FILES))
+def scene(request: pytest.FixtureRequest, exported: dict[str, Path]) -> GlbReader | UsdReader:
+    if request.param == "usd":
+        pytest.importorskip("pxr")
+        return UsdReader(exported["usd"])
+    return GlbReader(exported["gltf"])
+
+
+Scene = GlbReader | UsdReader
 
 
 def _floor_of(name: str) -> int:
@@ -118,10 +194,10 @@ def _top_cover(meshes: list[Any], y: float) -> Any:
     return unary_union([t for t in tris if t.area > 1e-12])
 
 
-# -- GLB ---------------------------------------------------------------------------------------
+# -- both formats ---------------------------------------------------------------------------------------
 
 
-def test_glb_has_one_node_per_floor_at_its_elevation(building: Path, scene: Scene) -> None:
+def test_one_node_per_floor_at_its_elevation(building: Path, scene: Scene) -> None:
     manifest, _ = _houses(building)
     floors = sorted(scene.names("floor"))
     assert floors == sorted(f"floor_{f.index}" for f in manifest.floors)
@@ -131,7 +207,7 @@ def test_glb_has_one_node_per_floor_at_its_elevation(building: Path, scene: Scen
         assert scene.extras[f"floor_{f.index}"]["elevation"] == pytest.approx(f.elevation)
 
 
-def test_glb_has_every_wall_door_window_and_object_once(building: Path, scene: Scene) -> None:
+def test_every_wall_door_window_and_object_once(building: Path, scene: Scene) -> None:
     manifest, houses = _houses(building)
     found: dict[int, Counter[tuple[str, str]]] = {f.index: Counter() for f in manifest.floors}
     for name, extras in scene.extras.items():
@@ -149,7 +225,7 @@ def test_glb_has_every_wall_door_window_and_object_once(building: Path, scene: S
         assert rooms == {r.id for r in house.rooms}
 
 
-def test_glb_walls_have_their_door_and_window_holes_cut(building: Path, scene: Scene) -> None:
+def test_walls_have_their_door_and_window_holes_cut(building: Path, scene: Scene) -> None:
     _, houses = _houses(building)
     checked = 0
     for k, house in houses.items():
@@ -176,7 +252,7 @@ def _flights(scene: Scene) -> list[str]:
     return scene.names("flight")
 
 
-def test_glb_stairs_climb_one_floor_per_flight_in_code_steps(building: Path, scene: Scene) -> None:
+def test_stairs_climb_one_floor_per_flight_in_code_steps(building: Path, scene: Scene) -> None:
     manifest, _ = _houses(building)
     floors = {f.index: f for f in manifest.floors}
     stairs = [c for c in manifest.cores if c.kind == "stair"]
@@ -211,7 +287,7 @@ def test_glb_stairs_climb_one_floor_per_flight_in_code_steps(building: Path, sce
                 assert m.bounds[0][2] >= core.z[0] - TOL and m.bounds[1][2] <= core.z[1] + TOL
 
 
-def test_glb_slabs_open_over_every_core_and_close_under_it(building: Path, scene: Scene) -> None:
+def test_slabs_open_over_every_core_and_close_under_it(building: Path, scene: Scene) -> None:
     manifest, _ = _houses(building)
     floors = {f.index: f for f in manifest.floors}
     assert {c.kind for c in manifest.cores} == {"stair", "elevator"}
@@ -219,7 +295,7 @@ def test_glb_slabs_open_over_every_core_and_close_under_it(building: Path, scene
         box = rect(core.x[0], core.z[0], core.x[1], core.z[1])
         served = sorted(core.floors)
         for k in served:
-            rooms = [scene.mesh(n) for n in scene.names("room") if _floor_of(n) == k and scene.scene.graph.get(n)[1]]
+            rooms = [scene.mesh(n) for n in scene.names("room") if _floor_of(n) == k and scene.has_mesh(n)]
             cover = _top_cover(rooms, floors[k].elevation).intersection(box)
             if k == served[0]:
                 assert cover.area == pytest.approx(box.area, rel=1e-6), f"{core.id} has no floor at {k}"
@@ -245,13 +321,13 @@ def box_contains(core: Any, bounds: np.ndarray) -> bool:
     )
 
 
-def test_glb_bounds_are_the_footprint_and_height(building: Path, scene: Scene) -> None:
+def test_bounds_are_the_footprint_and_height(building: Path, scene: Scene) -> None:
     manifest, houses = _houses(building)
     outline = unary_union([Polygon([(p.x, p.z) for p in r.floor_polygon]) for h in houses.values() for r in h.rooms])
     x0, z0, x1, z1 = outline.bounds
     top = max(manifest.floors, key=lambda f: f.index)
     ground = min(manifest.floors, key=lambda f: f.index)
-    lo, hi = scene.scene.bounds
+    lo, hi = scene.bounds()
     # walls are skins on their visible side: outside twins stand SKIN beyond the footprint
     assert lo[0] == pytest.approx(x0 - SKIN, abs=TOL) and hi[0] == pytest.approx(x1 + SKIN, abs=TOL)
     assert lo[2] == pytest.approx(z0 - SKIN, abs=TOL) and hi[2] == pytest.approx(z1 + SKIN, abs=TOL)
@@ -259,13 +335,61 @@ def test_glb_bounds_are_the_footprint_and_height(building: Path, scene: Scene) -
     assert lo[1] == pytest.approx(-(ground.height - ground.ceiling_height), abs=TOL)
 
 
-def test_glb_is_deterministic_and_coloured(building: Path, glb: Path, tmp_path: Path) -> None:
+def test_glb_is_deterministic_and_coloured(building: Path, exported: dict[str, Path], tmp_path: Path) -> None:
+    glb = exported["gltf"]
     again = export_building(building, "gltf", tmp_path / "again.glb")
     assert again.read_bytes() == glb.read_bytes()
     tree = _glb_json(glb)
     colours = {tuple(m["pbrMetallicRoughness"]["baseColorFactor"]) for m in tree["materials"]}
     assert len(colours) >= 5
     assert any(m.get("alphaMode") == "BLEND" for m in tree["materials"])  # glass
+
+
+def test_usd_is_laid_out_for_physics(building: Path, exported: dict[str, Path]) -> None:
+    pytest.importorskip("pxr")
+    from pxr import UsdGeom, UsdPhysics
+
+    usd = UsdReader(exported["usd"])
+    stage = usd.stage
+    assert UsdGeom.GetStageUpAxis(stage) == UsdGeom.Tokens.y
+    assert UsdGeom.GetStageMetersPerUnit(stage) == 1.0
+    assert any(p.IsA(UsdPhysics.Scene) for p in stage.Traverse())
+    for name in usd.names("floor"):
+        assert usd.prims[name].GetTypeName() == "Xform"
+    _, houses = _houses(building)
+    movable = {o.id for h in houses.values() for o in _all_objects(h.objects) if not o.kinematic}
+    assert movable
+    for kind in ("wall", "room", "step", "object", "door"):
+        for name in usd.names(kind):
+            if not usd.has_mesh(name):
+                continue
+            prim = usd._mesh_prim(name)
+            assert prim.HasAPI(UsdPhysics.CollisionAPI), name
+            rigid = prim.HasAPI(UsdPhysics.RigidBodyAPI)
+            assert rigid == (kind == "object" and usd.extras[name]["id"] in movable), name
+            if rigid:
+                assert UsdPhysics.MeshCollisionAPI(prim).GetApproximationAttr().Get() == "convexHull"
+    # every mesh has a material
+    from pxr import UsdShade
+
+    meshes = [p for p in stage.Traverse() if p.GetTypeName() == "Mesh"]
+    assert all(UsdShade.MaterialBindingAPI(p).ComputeBoundMaterial()[0] for p in meshes)
+
+
+def test_usd_is_deterministic_in_text_and_binary(building: Path, exported: dict[str, Path], tmp_path: Path) -> None:
+    pytest.importorskip("pxr")
+    from pxr import Usd
+
+    again = export_building(building, "usd", tmp_path / "again.usda")
+    assert again.read_text() == exported["usd"].read_text()
+    crate = export_building(building, "usd", tmp_path / "b.usd")
+    assert crate.read_bytes()[:8] == b"PXR-USDC"
+    assert export_building(building, "usd", tmp_path / "c.usd").read_bytes() == crate.read_bytes()
+    assert len(list(Usd.Stage.Open(str(crate)).Traverse())) == len(list(UsdReader(exported["usd"]).stage.Traverse()))
+
+
+def _all_objects(objects: list[Any]) -> list[Any]:
+    return [x for o in objects for x in (o, *_all_objects(o.children))]
 
 
 # -- stairs on their own -----------------------------------------------------------------------
