@@ -432,3 +432,21 @@ def test_export_cli_errors_are_clear(building: Path, tmp_path: Path) -> None:
     unknown = runner.invoke(app, ["export", str(building), "--format", "obj", "--out", str(tmp_path / "x.obj")])
     assert unknown.exit_code == 2 and "gltf" in unknown.output
     assert set(FORMATS) >= {"gltf", "usd"}
+
+
+def test_preview_draws_the_building_in_3d(building: Path, tmp_path: Path) -> None:
+    from PIL import Image
+
+    png = tmp_path / "preview.png"
+    result = runner.invoke(app, ["export", str(building), "--preview", str(png)])
+    assert result.exit_code == 0, result.output
+    image = Image.open(png).convert("RGB")
+    assert image.width == 1600 and image.height > 800
+    pixels = np.asarray(image).reshape(-1, 3)
+    drawn = np.any(pixels != 255, axis=1).mean()
+    assert 0.3 < drawn < 0.95  # the building fills the picture, on a white ground
+    assert len(np.unique(pixels[::7], axis=0)) > 200  # shaded faces in many materials
+    again = tmp_path / "again.png"
+    runner.invoke(app, ["export", str(building), "--preview", str(again)])
+    assert again.read_bytes() == png.read_bytes()
+    assert runner.invoke(app, ["export", str(building)]).exit_code == 2  # nothing to write
