@@ -441,7 +441,7 @@ def test_preview_draws_the_building_in_3d(building: Path, tmp_path: Path) -> Non
     result = runner.invoke(app, ["export", str(building), "--preview", str(png)])
     assert result.exit_code == 0, result.output
     image = Image.open(png).convert("RGB")
-    assert image.width == 1600 and image.height > 800
+    assert max(image.size) == 1600 and min(image.size) > 800
     pixels = np.asarray(image).reshape(-1, 3)
     drawn = np.any(pixels != 255, axis=1).mean()
     assert 0.3 < drawn < 0.95  # the building fills the picture, on a white ground

@@ -1,7 +1,9 @@
 """The export stage: a generated building as one 3D file for Blender (glTF) or Isaac Sim (USD),
 with the stairs and elevators AI2-THOR has no asset for, and a 3D picture of it.
 
-Needs the ``export`` extra (``pip install 'mansion[export]'``: trimesh and usd-core).
+Writing needs the ``export`` extra (``pip install 'mansion[export]'``: trimesh and usd-core).
+This module stays light (the command line imports it for the format names); the geometry is
+built in :mod:`mansion.export.building`.
 """
 
 from __future__ import annotations
@@ -10,7 +12,6 @@ import os
 from pathlib import Path
 
 from mansion.exceptions import MansionError
-from mansion.export.building import building_model, find_manifest
 from mansion.export.formats import FORMATS, ExportFormat, export_format, register
 from mansion.export.model import BuildingModel, Look, Node
 
@@ -23,9 +24,15 @@ __all__ = [
     "building_model",
     "export_building",
     "export_format",
-    "find_manifest",
     "register",
 ]
+
+
+def building_model(building: str | os.PathLike[str]) -> BuildingModel:
+    """The model of a building folder (see :func:`mansion.export.building.building_model`)."""
+    from mansion.export.building import building_model as build
+
+    return build(building)
 
 
 def export_building(building: str | os.PathLike[str], fmt: str, out: str | os.PathLike[str]) -> Path:

@@ -87,15 +87,16 @@ def _raster(tri: np.ndarray, colour: np.ndarray, zbuf: np.ndarray, cbuf: np.ndar
 
 
 def render_preview(
-    model: BuildingModel, path: str | os.PathLike[str], *, width: int = 1600,
+    model: BuildingModel, path: str | os.PathLike[str], *, size: int = 1600,
     azimuth: float = 215.0, elevation: float = 32.0, exploded: float | None = None,
     title: str | None = None,
 ) -> Path:
-    """Draw ``model`` to a PNG at ``path``: floors stacked bottom to top, ``exploded`` metres
-    apart (default: 0.9 × the ground floor's height), seen from ``azimuth``/``elevation``."""
+    """Draw ``model`` to a PNG at ``path`` (``size`` pixels on its longer side): floors stacked
+    bottom to top, ``exploded`` metres apart (default: 0.9 × the ground floor's height, half
+    that above four floors), seen from ``azimuth``/``elevation``."""
     floors = model.root.children
     heights = [float(n.info.get("height", 3.0)) for n in floors]
-    gap = 0.9 * (heights[0] if heights else 3.0) if exploded is None else exploded
+    gap = (0.9 if len(floors) <= 4 else 0.5) * (heights[0] if heights else 3.0) if exploded is None else exploded
     right, up, forward = _camera(azimuth, elevation)
     light = -np.array([0.4, -1.0, 0.25]) / np.linalg.norm([0.4, -1.0, 0.25])
     layers = _layers(model, gap)
@@ -105,14 +106,16 @@ def render_preview(
     allv = np.concatenate([t.reshape(-1, 3) for _, _, t, _ in layers])
     sx, sy = allv @ right, -(allv @ up)
     margin, head = 0.04, 70
-    span = max(sx.max() - sx.min(), 1e-6)
-    scale = width * (1 - 2 * margin) / span
-    height = int((sy.max() - sy.min()) * scale + 2 * margin * width) + head
+    span_x, span_y = max(sx.max() - sx.min(), 1e-6), max(sy.max() - sy.min(), 1e-6)
+    pad = 2 * margin * size
+    scale = min((size - pad) / span_x, (size - pad - head) / span_y)
+    width = int(span_x * scale + pad)
+    height = int(span_y * scale + pad) + head
     ss = 2  # supersampling, for smooth edges
-    ox = margin * width - sx.min() * scale
-    oy = margin * width + head - sy.min() * scale
+    ox = margin * size - sx.min() * scale
+    oy = margin * size + head - sy.min() * scale
 
-    zbuf = np.full((height * ss, width * ss), np.inf)
+    zbuf = np.full((height * ss, width * ss), np.inf, np.float32)
     cbuf = np.empty((height * ss, width * ss, 3), np.uint8)
     cbuf[:] = _BACKGROUND
     for _order, _layer, tris, rgb in layers:
@@ -133,9 +136,9 @@ def render_preview(
     draw = ImageDraw.Draw(img)
     font = ImageFont.load_default(size=22)
     label = title or str(model.root.info.get("description") or model.root.name)
-    draw.text((margin * width, 18), f"{label}: {len(floors)} floors", fill=(30, 30, 30), font=font)
+    draw.text((margin * size, 18), f"{label}: {len(floors)} floors", fill=(30, 30, 30), font=font)
     from io import BytesIO
 
     buf = BytesIO()
-    img.save(buf, format="PNG", optimize=True)
+    img.save(buf, format="PNG")
     return atomic_write_bytes(path, buf.getvalue())
