@@ -450,3 +450,48 @@ def test_preview_draws_the_building_in_3d(building: Path, tmp_path: Path) -> Non
     runner.invoke(app, ["export", str(building), "--preview", str(again)])
     assert again.read_bytes() == png.read_bytes()
     assert runner.invoke(app, ["export", str(building)]).exit_code == 2  # nothing to write
+
+
+def test_real_houses_export_every_element_with_its_holes(tmp_path: Path) -> None:
+    """Every real house AI2-THOR loads (ProcTHOR's, Holodeck's; ../shared/data/real-houses), given
+    alone, is a one-floor model with every wall, door, window and object once, and walls whose
+    solid is the wall less its holes."""
+    import gzip
+    import os
+
+    folder = os.environ.get("MANSION_REAL_HOUSES") or Path(__file__).resolve().parents[1].parent / "shared" / "data" / "real-houses"
+    data = Path(folder) / "houses.jsonl.gz"
+    if not data.is_file():
+        pytest.skip(f"{data} is absent")
+    walls = exact = houses = 0
+    with gzip.open(data, "rt", encoding="utf-8") as lines:
+        for line in lines:
+            record = json.loads(line)
+            file = tmp_path / "house.json"
+            file.write_text(json.dumps(record["house"]))
+            house = House.parse(record["house"])
+            model = building_model(file)
+            assert [n.name for n in model.root.children] == ["floor_0"]
+            found: Counter[tuple[str, str]] = Counter(
+                (n.kind, str(n.info["id"])) for n, _ in model.root.walk() if n.kind in ("wall", "door", "window", "object")
+            )
+            assert found == _expected_ids(house), record["name"]
+            cut: dict[str, float] = {}
+            for h in [*house.doors, *house.windows]:
+                lo, hi = h.hole_polygon
+                for wid in {h.wall0, h.wall1}:
+                    cut[wid] = cut.get(wid, 0.0) + (hi.x - lo.x) * (hi.y - lo.y)
+            by_id = {w.id: w for w in house.walls}
+            for node, _ in model.root.walk():
+                if node.kind != "wall":
+                    continue
+                wall = by_id[str(node.info["id"])]
+                (x0, z0), (x1, z1) = wall.segment()
+                full = float(np.hypot(x1 - x0, z1 - z0)) * (max(p.y for p in wall.polygon) - min(p.y for p in wall.polygon))
+                volume = trimesh.Trimesh(*node.mesh).volume / SKIN
+                assert 0.0 < volume <= full + 1e-6, wall.id
+                walls += 1
+                exact += abs(volume - (full - cut.get(wall.id, 0.0))) < 1e-6
+            houses += 1
+    assert houses == 127
+    assert exact >= 0.99 * walls  # the rest: holes reaching past their wall's end

@@ -16,7 +16,7 @@ from mansion.export.formats import FORMATS
 
 
 def export(
-    building: Annotated[Path, typer.Argument(help="A building folder written by `mansion generate` (with scenes/manifest.json).")],
+    building: Annotated[Path, typer.Argument(help="A building folder written by `mansion generate` (with scenes/manifest.json), its manifest, or one house JSON.")],
     out: Annotated[Optional[Path], typer.Option("--out", "-o", help="The file to write (.glb for gltf; .usd, .usda or .usdc for usd).")] = None,
     fmt: Annotated[str, typer.Option("--format", "-f", help=f"One of: {', '.join(sorted(FORMATS))}.")] = "gltf",
     preview: Annotated[Optional[Path], typer.Option("--preview", help="Also draw the building in 3D (exploded floors) to this PNG.")] = None,

@@ -1,10 +1,13 @@
 """A generated building folder (its manifest and one house JSON per floor) → a :class:`BuildingModel`:
 the floors stacked at their elevations, with slabs, walls, doors, windows, stairs, elevator cars
-and objects."""
+and objects. A lone house JSON (ProcTHOR's, Holodeck's, one mansion floor) is a one-floor
+building without cores."""
 
 from __future__ import annotations
 
+import json
 import os
+from dataclasses import dataclass
 from pathlib import Path
 
 from shapely.geometry import Polygon
@@ -18,23 +21,32 @@ from mansion.export.meshes import prism
 from mansion.export.model import BuildingModel, Node
 from mansion.export.walls import WallFrame, hole_nodes, wall_nodes
 from mansion.scene.house import House
-from mansion.scene.manifest import BuildingManifest, ManifestFloor
+from mansion.scene.manifest import BuildingManifest, ManifestCore
 
 __all__ = ["building_model", "find_manifest"]
+
+
+@dataclass(frozen=True)
+class _Floor:
+    index: int
+    house: str
+    elevation: float
+    height: float
+    ceiling_height: float
 
 _MIN_SLAB = 0.2  # when floors leave no gap between a ceiling and the next floor
 
 
 def find_manifest(path: str | os.PathLike[str]) -> Path:
     """The manifest of a building folder (``DIR/scenes/manifest.json`` or ``DIR/manifest.json``),
-    or ``path`` itself when it is one."""
+    or ``path`` itself when it is a JSON file (a manifest or a lone house)."""
     p = Path(path)
     for candidate in (p / "scenes" / "manifest.json", p / "manifest.json", p):
         if candidate.is_file() and candidate.suffix == ".json":
             return candidate
     raise InvalidInputError(
-        f"{str(p)!r} is not a building folder: no scenes/manifest.json or manifest.json in it "
-        "(write one with `mansion generate ... --out DIR`)"
+        f"{str(p)!r} is not a building folder or a house JSON: no scenes/manifest.json or "
+        "manifest.json in it (write one with `mansion generate ... --out DIR`)"
     )
 
 
@@ -46,20 +58,42 @@ def _door_centre(house: House, frames: dict[str, WallFrame], door_id: str | None
     return frames[door.wall0].at((lo.x + hi.x) / 2)
 
 
-def _slab_thickness(floors: list[ManifestFloor], i: int) -> float:
+def _slab_thickness(floors: list[_Floor], i: int) -> float:
     below = floors[i - 1] if i > 0 else floors[i]
     gap = (floors[i].elevation - below.elevation if i > 0 else below.height) - below.ceiling_height
     return gap if gap > 0.01 else _MIN_SLAB
 
 
 def building_model(path: str | os.PathLike[str]) -> BuildingModel:
-    """Read a building folder and build its model (see :mod:`mansion.export`)."""
-    manifest_path = find_manifest(path)
-    manifest = BuildingManifest.load(manifest_path)
-    floors = sorted(manifest.floors, key=lambda f: f.index)
+    """Read a building folder, its manifest, or a lone house JSON, and build its model (see
+    :mod:`mansion.export`)."""
+    file = find_manifest(path)
+    try:
+        data = json.loads(file.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as exc:
+        raise InvalidInputError(f"cannot read {str(file)!r}: {exc}") from exc
+    if isinstance(data, dict) and "rooms" in data and "floors" not in data:
+        house = House.parse(data, source=str(file))
+        heights = [p.y for w in house.walls for p in w.polygon] or [3.0]
+        ceiling = max(heights) - min(heights) or 3.0
+        floor = _Floor(0, file.name, 0.0, ceiling + _MIN_SLAB, ceiling)
+        info: dict[str, str | float | int] = {"id": house.id or file.stem, "house": file.name}
+        return _model(house.id or file.stem, info, [floor], {0: house}, [])
+    manifest = BuildingManifest.load(file)
+    floors = [_Floor(f.index, f.house, f.elevation, f.height, f.ceiling_height) for f in manifest.floors]
     if not floors:
-        raise InvalidInputError(f"{str(manifest_path)!r} lists no floors")
-    houses = {f.index: House.load(manifest_path.parent / f.house) for f in floors}
+        raise InvalidInputError(f"{str(file)!r} lists no floors")
+    houses = {f.index: House.load(file.parent / f.house) for f in floors}
+    info = {"id": manifest.id, "description": manifest.description,
+            "buildingType": manifest.building_type, "seed": manifest.seed}
+    return _model(manifest.id, info, floors, houses, manifest.cores)
+
+
+def _model(
+    name: str, info: dict[str, str | float | int], floors: list[_Floor], houses: dict[int, House],
+    cores: list[ManifestCore],
+) -> BuildingModel:
+    floors = sorted(floors, key=lambda f: f.index)
     by_index = {f.index: f for f in floors}
 
     walls: dict[int, tuple[list[Node], dict[str, WallFrame]]] = {}
@@ -70,7 +104,7 @@ def building_model(path: str | os.PathLike[str]) -> BuildingModel:
     # between consecutive floors served, and the openings they need.
     openings: dict[int, list[Polygon]] = {f.index: [] for f in floors}
     core_nodes: dict[int, list[Node]] = {f.index: [] for f in floors}
-    for core in manifest.cores:
+    for core in cores:
         served = sorted(k for k in set(core.floors) if k in by_index)
         if not served:
             continue
@@ -92,8 +126,7 @@ def building_model(path: str | os.PathLike[str]) -> BuildingModel:
                 core_nodes[lower].append(node)
                 openings[upper].append(opening)
 
-    root = Node(manifest.id, "building", info={"id": manifest.id, "description": manifest.description,
-                                                "buildingType": manifest.building_type, "seed": manifest.seed})
+    root = Node(name, "building", info=info)
     outline = []
     for i, f in enumerate(floors):
         house, name = houses[f.index], f"floor_{f.index}"
