@@ -495,3 +495,31 @@ def test_real_houses_export_every_element_with_its_holes(tmp_path: Path) -> None
             houses += 1
     assert houses == 127
     assert exact >= 0.99 * walls  # the rest: holes reaching past their wall's end
+
+
+def test_every_flight_starts_and_ends_on_floor(building: Path, scene: Scene) -> None:
+    """The floor goes on before the first tread and after the last: a flight connects the two
+    floors' slabs (and through them the landings outside the core's door)."""
+    manifest, _ = _houses(building)
+    floors = {f.index: f for f in manifest.floors}
+    covers = {}
+    for k, f in floors.items():
+        rooms = [scene.mesh(n) for n in scene.names("room") if _floor_of(n) == k and scene.has_mesh(n)]
+        covers[k] = _top_cover(rooms, f.elevation)
+    flights = _flights(scene)
+    assert flights
+    for name in flights:
+        steps = sorted(c for c in scene.children(name) if scene.extras[c]["kind"] == "step")
+        centres = [scene.mesh(s).bounds.mean(axis=0)[[0, 2]] for s in steps]
+        for a, b, floor in ((centres[1], centres[0], scene.extras[name]["from_floor"]),
+                            (centres[-2], centres[-1], scene.extras[name]["to_floor"])):
+            step = (b - a) / np.linalg.norm(b - a)
+            going = float(scene.extras[name]["going"])
+            x, z = b + step * (going / 2 + 0.1)  # just beyond the end tread, along the run
+            probe = Polygon.from_bounds(x - 0.01, z - 0.01, x + 0.01, z + 0.01)
+            assert covers[floor].contains(probe), f"{name}: no floor at {floor} beyond ({x:.2f}, {z:.2f})"
+    # and the landing pose outside each core's door stands on its floor's slab
+    for core in manifest.cores:
+        for landing in core.landings:
+            p = landing.pose.position
+            assert covers[landing.floor].contains(Polygon.from_bounds(p.x - 0.01, p.z - 0.01, p.x + 0.01, p.z + 0.01))

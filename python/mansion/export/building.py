@@ -155,8 +155,8 @@ def _model(
             home(str(node.info["room"])).add(node)
         for room_id, node in hole_nodes(house, walls[f.index][1], name):
             home(room_id).add(node)
-        for room_id, node in object_nodes(house.objects, name):
-            home(room_id).add(node)
+        for owner, node in object_nodes(house.objects, name):
+            home(owner).add(node)
         for node in core_nodes[f.index]:
             floor.add(node)
         if i == len(floors) - 1:

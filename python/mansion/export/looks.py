@@ -11,6 +11,8 @@ from __future__ import annotations
 import hashlib
 from functools import cache
 
+import numpy as np
+
 from mansion.export.model import Look
 from mansion.scene.house import MaterialProperties
 from mansion.scene.materials import _words as material_words
@@ -48,16 +50,16 @@ def _name_colour(name: str) -> tuple[float, float, float]:
     words = material_words(name)
     kinds = [c for w, c in _KINDS.items() if w in words]
     hues = [c for w, c in _HUES.items() if w in words]
-    base = kinds[0] if kinds else _DEFAULT
+    base = np.array(kinds[0] if kinds else _DEFAULT)
     # A colour word sets the hue; the surface kind keeps a third of its own (oak stays woody).
     if hues:
-        hue = tuple(sum(h[i] for h in hues) / len(hues) for i in range(3))
-        base = tuple(0.35 * b + 0.65 * h for b, h in zip(base, hue, strict=True))
+        base = 0.35 * base + 0.65 * np.mean(hues, axis=0)
     if "dark" in words:
-        base = tuple(0.55 * c for c in base)
+        base = 0.55 * base
     if "light" in words or "pale" in words:
-        base = tuple(c + 0.4 * (1.0 - c) for c in base)
-    return tuple(round(min(1.0, c), 4) for c in base)  # type: ignore[return-value]
+        base = base + 0.4 * (1.0 - base)
+    r, g, b = (round(float(min(1.0, c)), 4) for c in base)
+    return r, g, b
 
 
 def material_look(material: MaterialProperties | None, fallback: str) -> Look:
