@@ -26,7 +26,7 @@ from mansion._io import atomic_write_bytes, atomic_write_text
 from mansion.exceptions import EditError, InvalidInputError
 from mansion.scene.house import House
 from mansion.sim.tasks import TaskSet, TaskSpec
-from mansion.sim.world import find_manifest
+from mansion.sim.world import building_root, find_manifest
 
 __all__ = [
     "FloorPatch",
@@ -106,8 +106,6 @@ def _sha(data: bytes) -> str:
 
 
 def variants_dir(building_dir: str | Path) -> Path:
-    from mansion.edit.workspace import building_root
-
     return building_root(find_manifest(building_dir)) / VARIANTS
 
 

@@ -19,9 +19,9 @@ from rapidfuzz import fuzz, process
 from mansion.exceptions import UnknownObjectError
 from mansion.sim.grid import CELL
 from mansion.sim.planner import BuildingMap
-from mansion.sim.world import Building, FloorState, ObjectInfo, find_manifest
+from mansion.sim.world import Building, FloorState, ObjectInfo, building_root, find_manifest
 
-__all__ = ["Workspace", "building_root", "norm"]
+__all__ = ["Workspace", "norm"]
 
 #: A keyword matches an object type at this rapidfuzz partial-ratio score (0-100) or above.
 KEYWORD_SCORE = 90.0
@@ -30,13 +30,6 @@ KEYWORD_SCORE = 90.0
 def norm(text: str) -> str:
     """Lower case, letters and digits only: "dining table", "DiningTable" and "dining_table" meet."""
     return re.sub(r"[^a-z0-9]", "", text.lower())
-
-
-def building_root(manifest_path: Path) -> Path:
-    """The folder ``mansion generate`` wrote (variants live in its ``variants/``): the parent of a
-    ``scenes`` folder, else the manifest's own folder."""
-    folder = manifest_path.parent
-    return folder.parent if folder.name == "scenes" else folder
 
 
 class Workspace:
