@@ -107,7 +107,7 @@ def edit_building(building_dir: str | Path, spec: EditSpec | None = None, *, tex
         return result
     task = task.model_copy(update={"max_steps": 2 * steps + 10})
     result.variant = ws.root / "variants" / name
-    log.result(f"variant {name!r} saved: {result.variant}", True)
+    log.result(f"variant {name!r} saved in variants/{name}/ of the building", True)
     save_variant(ws, name, text=spec.text, planner=planner, spec=spec.model_dump(mode="json"),
                  log=[line.to_dict() for line in log.lines], task=task)
     result.ok, result.task = True, task
