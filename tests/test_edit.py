@@ -376,3 +376,41 @@ def test_cli_edit_list_apply_revert(office: Path, tmp_path: Path) -> None:
     # bad input: exit 2
     result = runner.invoke(app, ["edit", str(root), "I need a task where ..."])
     assert result.exit_code == 2 and "--planner anthropic" in result.output
+
+
+# -- the ReAct controller, replayed through the Anthropic SDK -----------------------------------
+def test_react_controller_from_recorded_tool_use(office: Path, tmp_path: Path) -> None:
+    from llm_replay import Replay
+
+    root = _copy(office, tmp_path)
+    replay = Replay()
+    r = edit_building(root, text=PAPER["text"], name="paper", planner="anthropic", client=replay.client())
+    assert r.ok, r.failed
+    assert replay.served == [f"editor_paper.attempt{k}" for k in range(1, 7)]
+    first = replay.requests[0]
+    assert "scene editing agent" in first["system"] and "Variant: paper" in first["messages"][0]["content"][0]["text"]
+    assert {t["name"] for t in first["tools"]} == {
+        "CheckPath", "SearchAssets", "ListObjects", "CheckSurface", "SearchContents", "PlaceInContainer",
+        "RemoveObject", "PlaceOnSurface", "SubmitTask"}
+    # the closed fridge came back to the model as an error result, and it opened the fridge
+    results = replay.requests[3]["messages"][-1]["content"]
+    closed = next(b for b in results if b.get("is_error"))
+    assert "ContainerClosedError" in closed["content"]
+    # the model's edits, then the offline check finds the objects where it put them
+    assert [e.split(" ")[0] for e in r.edits] == ["added", "opened", "added"]
+    assert [t.object_type for t in r.task.targets] == ["Apple", "WineBottle"]
+    assert any(line.text.startswith("SubmitTask: accepted") for line in r.log.lines)
+    assert run_task(BuildingEnv(root, variant="paper"), r.task, OracleAgent).success
+
+
+def test_react_controller_that_never_submits_fails_clearly(office: Path, tmp_path: Path) -> None:
+    from llm_replay import Replay, message
+
+    from mansion.exceptions import PlannerError
+
+    root = _copy(office, tmp_path)
+    replay = Replay(overrides={"editor_quit.attempt1": message("I cannot help with that building.")})
+    with pytest.raises(PlannerError, match="stopped without SubmitTask: I cannot help"):
+        edit_building(root, text="I need a task where the agent fetches a unicorn", name="quit",
+                      planner="anthropic", client=replay.client())
+    assert not (root / "variants" / "quit").exists()

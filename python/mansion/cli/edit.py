@@ -61,8 +61,9 @@ def edit(
     if not result.ok:
         Console(stderr=True, soft_wrap=True).print(f"[bold red]cannot make the task executable:[/bold red] {escape(result.failed or '')}")
         raise typer.Exit(code=1)
-    console.print(f"variant: {escape(str(result.variant))} ({len(result.edits)} edits; "
-                  f"the task: {escape(str(result.variant / 'task.json'))})")
+    variant = result.variant or Path()
+    console.print(f"variant: {escape(str(variant))} ({len(result.edits)} edits; "
+                  f"the task: {escape(str(variant / 'task.json'))})")
 
 
 @variants_app.command("list")

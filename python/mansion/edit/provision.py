@@ -86,6 +86,15 @@ class _Run:
             self.log.edit(e.text)
         self.done_edits = len(self.tools.edits)
 
+    def _begin(self, what: str, floor: int) -> str:
+        """Log the precondition; a floor the building lacks fails it at once."""
+        self.log.precondition(what)
+        try:
+            self.ws.check_floor(floor)
+        except EditError as exc:
+            raise PreconditionFailed(what, str(exc)) from None
+        return what
+
     # -- start ----------------------------------------------------------------------------------
     def start(self) -> Start:
         s = self.spec.start
@@ -104,12 +113,7 @@ class _Run:
 
     # -- objects to fetch -----------------------------------------------------------------------
     def fetch(self, f: Fetch) -> TargetObject:
-        what = f"{_a(f.object_type)} {f.where()} on floor {f.floor}"
-        self.log.precondition(what)
-        try:
-            self.ws.check_floor(f.floor)
-        except EditError as exc:
-            raise PreconditionFailed(what, str(exc)) from None
+        what = self._begin(f"{_a(f.object_type)} {f.where()} on floor {f.floor}", f.floor)
         kind = f.on or f.in_
         if kind is not None:
             recs = self.ws.of_type(f.floor, kind)
@@ -212,12 +216,7 @@ class _Run:
     def deliver(self, start: Start, targets: list[TargetObject]) -> Destination:
         d = self.spec.deliver
         kinds = ", ".join(t.object_type for t in targets)
-        what = f"{_a(d.on)} on floor {d.floor} with room for {kinds}"
-        self.log.precondition(what)
-        try:
-            self.ws.check_floor(d.floor)
-        except EditError as exc:
-            raise PreconditionFailed(what, str(exc)) from None
+        what = self._begin(f"{_a(d.on)} on floor {d.floor} with room for {kinds}", d.floor)
         recs = [r for r in self.ws.of_type(d.floor, d.on) if r.parent is None]
         # the one in the start room first (the sofa of "the lobby's sofa"), then by id
         recs.sort(key=lambda r: (not (d.floor == start.floor and r.room == start.room), r.id))
@@ -299,6 +298,7 @@ def provision(tools: SceneTools, spec: EditSpec, log: EditLog) -> Provisioned:
     """Check every precondition of ``spec`` on the tools' workspace, provisioning what is
     missing; raises :class:`PreconditionFailed` at the first that cannot be met."""
     run = _Run(tools, spec, log)
+    run.done_edits = len(tools.edits)  # a controller before this one logged its own edits
     start = run.start()
     targets = [run.fetch(f) for f in spec.fetch]
     dest = run.deliver(start, targets)
