@@ -29,7 +29,7 @@ from mansion.exceptions import (
 )
 from mansion.placement.check import footprint
 from mansion.scene import write_scenes
-from mansion.scene.validate import validate_building
+from mansion.scene.validate import validate_path
 from mansion.sim import BuildingEnv
 from mansion.sim.agents import OracleAgent
 from mansion.sim.evaluate import run_task
@@ -115,12 +115,14 @@ def test_oracle_completes_the_task_with_the_variant_and_fails_without(office: Pa
 
 
 def test_every_edited_floor_validates(office: Path, paper_variant: Any) -> None:
-    base = validate_building(office / "scenes" / "manifest.json")
-    edited = validate_building(paper_variant.variant / "scenes" / "manifest.json")
-    assert [p for p in edited if p.severity == "error"] == []
-    assert sorted(p.rule for p in edited) == sorted(p.rule for p in base), "no new warning either"
-    result = runner.invoke(app, ["validate", str(paper_variant.variant)])
-    assert result.exit_code == 0, result.output
+    for p in load_variant(office, "snack-and-drink").patch:
+        edited = paper_variant.variant / "scenes" / p.house
+        found = validate_path(edited)
+        assert [q for q in found if q.severity == "error"] == []
+        assert sorted(q.rule for q in found) == sorted(q.rule for q in validate_path(office / "scenes" / p.house)), \
+            "no new warning either"
+        result = runner.invoke(app, ["validate", str(edited)])
+        assert result.exit_code == 0, result.output
 
 
 def test_patch_replays_to_the_variant_scenes(office: Path, paper_variant: Any) -> None:
@@ -365,7 +367,7 @@ def test_cli_edit_list_apply_revert(office: Path, tmp_path: Path) -> None:
     assert runner.invoke(app, ["variants", "apply", str(root), "paper"]).exit_code == 0
     assert _digests(root) != base
     assert "(applied)" in runner.invoke(app, ["variants", "list", str(root)]).output
-    assert runner.invoke(app, ["validate", str(root)]).exit_code == 0
+    assert runner.invoke(app, ["validate", str(root / "scenes" / "floor_1.json")]).exit_code == 0
     assert runner.invoke(app, ["variants", "revert", str(root)]).exit_code == 0
     assert _digests(root) == base
     # a task that cannot be made executable: exit 1, naming the precondition
@@ -414,3 +416,41 @@ def test_react_controller_that_never_submits_fails_clearly(office: Path, tmp_pat
         edit_building(root, text="I need a task where the agent fetches a unicorn", name="quit",
                       planner="anthropic", client=replay.client())
     assert not (root / "variants" / "quit").exists()
+
+
+def test_fetch_anywhere_goes_where_ai2thor_puts_it_most(office: Path, tmp_path: Path) -> None:
+    from mansion.placement.assets import database
+
+    root = _copy(office, tmp_path)
+    spec = {**PAPER, "fetch": [{"object_type": "Tomato", "floor": 1}], "deliver": {"floor": 0, "on": "SideTable"}}
+    r = edit_building(root, EditSpec.model_validate(spec), name="tomato")
+    assert r.ok, r.failed
+    target = r.task.targets[0]
+    ws = Workspace(root)
+    present = {i.props.object_type for i in ws.floor(1).objects.values() if i.parent is None}
+    likely = {t: v["Tomato"] for t, v in database().receptacles.items() if "Tomato" in v and t in present}
+    assert target.receptacle_type == max(likely, key=lambda t: likely[t])
+    assert run_task(BuildingEnv(root, variant="tomato"), r.task, OracleAgent).success
+
+
+def test_a_full_destination_is_cleared_largest_first(office: Path, tmp_path: Path) -> None:
+    root = _copy(office, tmp_path)
+    ws = Workspace(root)
+    filler = SceneTools(ws)
+    sofas = [s.id for s in ws.of_type(0, "Sofa")]
+    for sofa in sofas:  # books, then apples between them, then pencils in the gaps
+        for asset in ("Book_1", "Apple_29", "Pencil_1"):
+            with pytest.raises(SurfaceFullError):
+                for _ in range(200):
+                    filler.place_on_surface(asset, sofa, floor=0)
+    ws.building.house(0).to_json(root / "scenes" / "floor_0.json")  # a building with cluttered sofas
+    r = edit_building(root, EditSpec.model_validate(PAPER), name="cleared")
+    assert r.ok, r.failed
+    removed = [e for e in r.edits if e.startswith("removed")]
+    assert removed and r.task.destination.receptacle == "lobby|sofa_0" == sorted(sofas, key=lambda s: not s.startswith("lobby"))[0]
+    v = load_variant(root, "cleared")
+    floor0 = next(p for p in v.patch if p.floor == 0)
+    assert len(floor0.removed) == len(removed) and not floor0.added
+    base = json.loads((root / "scenes" / "floor_0.json").read_bytes())
+    assert (json.dumps(patch_house(base, floor0), indent=1) + "\n").encode() == (r.variant / "scenes" / "floor_0.json").read_bytes()
+    assert run_task(BuildingEnv(root, variant="cleared"), r.task, OracleAgent).success

@@ -195,14 +195,15 @@ class _Run:
         raise PreconditionFailed(what, "; ".join(why) or f"no receptacle on floor {f.floor} can take a {f.object_type}")
 
     def _any_receptacles(self, f: Fetch) -> list[ObjectInfo]:
-        """Receptacles of the floor AI2-THOR's database lets take the type: surfaces first."""
+        """Receptacles of the floor AI2-THOR's database lets take the type, those its scenes put
+        the type on most often first (a tomato goes to the fridge before the sink)."""
         from mansion.placement.assets import database
 
         rec_db = database().receptacles
         st = self.ws.floor(f.floor)
         out = [i for i in st.objects.values() if i.parent is None and i.props.receptacle
                and f.object_type in rec_db.get(i.props.object_type, {})]
-        return sorted(out, key=lambda i: (i.props.openable, i.id))
+        return sorted(out, key=lambda i: (-rec_db[i.props.object_type][f.object_type], i.id))
 
     def _target(self, floor: int, o: ObjectInfo) -> TargetObject:
         st = self.ws.floor(floor)

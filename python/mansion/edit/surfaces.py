@@ -15,7 +15,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.affinity import rotate, translate
 
 from mansion.placement.check import footprint
 from mansion.sim.world import ObjectInfo, Props
@@ -76,10 +75,16 @@ def contents(rec: ObjectInfo, others: list[ObjectInfo]) -> list[ObjectInfo]:
 
 def _local_box(rec: ObjectInfo, o: ObjectInfo) -> tuple[float, float, float, float]:
     """``o``'s footprint in the receptacle's frame (u along its width, v along its depth), as
-    the bounds of its turned box."""
-    fp = footprint(o.centre, o.props.width, o.props.depth, o.obj.rotation.y)
-    local = rotate(translate(fp, -rec.centre[0], -rec.centre[1]), rec.obj.rotation.y, origin=(0, 0))
-    return local.bounds  # type: ignore[no-any-return]
+    the bounds of its turned box (the inverse of the turn ``footprint`` applies)."""
+    t = math.radians(rec.obj.rotation.y)
+    dx, dz = o.centre[0] - rec.centre[0], o.centre[1] - rec.centre[1]
+    u = dx * math.cos(t) - dz * math.sin(t)
+    v = dx * math.sin(t) + dz * math.cos(t)
+    r = math.radians(o.obj.rotation.y - rec.obj.rotation.y)
+    c, s = abs(math.cos(r)), abs(math.sin(r))
+    hu = c * o.props.width / 2 + s * o.props.depth / 2
+    hv = s * o.props.width / 2 + c * o.props.depth / 2
+    return (u - hu, v - hv, u + hu, v + hv)
 
 
 def fit(rec: ObjectInfo, item: Props, taken: list[ObjectInfo], inside: bool) -> Slot | None:
@@ -100,9 +105,10 @@ def fit(rec: ObjectInfo, item: Props, taken: list[ObjectInfo], inside: bool) -> 
         vs = _axis(half_d - d / 2)
         u, v = np.meshgrid(us, vs, indexing="ij")
         u, v = u.ravel(), v.ravel()
-        ok = np.ones(u.shape, dtype=bool)
-        for x0, z0, x1, z1 in boxes:
-            ok &= ~((u - w / 2 < x1 + GAP) & (u + w / 2 > x0 - GAP) & (v - d / 2 < z1 + GAP) & (v + d / 2 > z0 - GAP))
+        x0, z0, x1, z1 = (boxes[:, i][None, :] for i in range(4))
+        hit = ((u[:, None] - w / 2 < x1 + GAP) & (u[:, None] + w / 2 > x0 - GAP)
+               & (v[:, None] - d / 2 < z1 + GAP) & (v[:, None] + d / 2 > z0 - GAP))
+        ok = ~hit.any(axis=1)
         if not ok.any():
             continue
         r = np.where(ok, np.hypot(u, v), np.inf)

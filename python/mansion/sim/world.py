@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -43,6 +44,7 @@ class Props:
     receptacle: bool
 
 
+@cache
 def props(asset_id: str) -> Props:
     rec = asset_ids().get(asset_id)
     if rec is None:
