@@ -378,6 +378,12 @@ def test_cli_edit_list_apply_revert(office: Path, tmp_path: Path) -> None:
     # bad input: exit 2
     result = runner.invoke(app, ["edit", str(root), "I need a task where ..."])
     assert result.exit_code == 2 and "--planner anthropic" in result.output
+    import importlib.util
+
+    if importlib.util.find_spec("ai2thor") is None:
+        spec.write_text(json.dumps(PAPER))
+        result = runner.invoke(app, ["edit", str(root), "--spec", str(spec), "--settle"])
+        assert result.exit_code == 2 and "mansion[ai2thor]" in result.output
 
 
 # -- the ReAct controller, replayed through the Anthropic SDK -----------------------------------
@@ -454,3 +460,58 @@ def test_a_full_destination_is_cleared_largest_first(office: Path, tmp_path: Pat
     base = json.loads((root / "scenes" / "floor_0.json").read_bytes())
     assert (json.dumps(patch_house(base, floor0), indent=1) + "\n").encode() == (r.variant / "scenes" / "floor_0.json").read_bytes()
     assert run_task(BuildingEnv(root, variant="cleared"), r.task, OracleAgent).success
+
+
+class SettlingController:
+    """Stands in for ``ai2thor.controller.Controller`` (the Unity build cannot be had here): on
+    ``reset`` it reports every object of the house as settled ``drop`` metres lower."""
+
+    def __init__(self, drop: float = 0.004, lose: str | None = None):
+        self.drop, self.lose = drop, lose
+        self.scenes: list[dict[str, Any]] = []
+
+    def reset(self, scene: dict[str, Any]) -> Any:
+        self.scenes.append(scene)
+        objects = []
+
+        def walk(items: list[dict[str, Any]]) -> None:
+            for o in items:
+                if o["id"] != self.lose:
+                    p = o["position"]
+                    centre = {"x": p["x"], "y": p["y"] - self.drop, "z": p["z"]}
+                    objects.append({"objectId": o["id"], "position": {**centre, "y": centre["y"] - 0.05},
+                                    "axisAlignedBoundingBox": {"center": centre}})
+                walk(o.get("children", []))
+
+        walk(scene["objects"])
+        return type("Event", (), {"metadata": {"lastActionSuccess": True, "objects": objects}})()
+
+
+def test_placed_objects_settle_in_the_simulator(office: Path, tmp_path: Path, paper_variant: Any) -> None:
+    root = _copy(office, tmp_path)
+    ctrl = SettlingController()
+    r = edit_building(root, EditSpec.model_validate(PAPER), name="settled", settle_with=ctrl)
+    assert r.ok, r.failed
+    assert len(ctrl.scenes) == 1 and ctrl.scenes[0]["metadata"]["mansion"]["floor"] == 1
+    settled = [line.text for line in r.log.lines if line.text.startswith("settled ")]
+    assert len(settled) == 2 and all("moved 0.004 m" in s for s in settled)
+
+    def ys(path: Path) -> dict[str, float]:
+        out: dict[str, float] = {}
+
+        def walk(items: list[dict[str, Any]]) -> None:
+            for o in items:
+                out[o["id"]] = o["position"]["y"]
+                walk(o.get("children", []))
+
+        walk(json.loads(path.read_text())["objects"])
+        return out
+
+    settled_y = ys(r.variant / "scenes" / "floor_1.json")
+    placed_y = ys(paper_variant.variant / "scenes" / "floor_1.json")
+    for t in r.task.targets:
+        assert settled_y[t.object_id] == pytest.approx(placed_y[t.object_id] - 0.004, abs=1e-4)
+    apple = paper_variant.task.targets[0].object_id
+    lost = edit_building(_copy(office, tmp_path / "b"), EditSpec.model_validate(PAPER), name="lost",
+                         settle_with=SettlingController(lose=apple))
+    assert not lost.ok and f"did not spawn {apple}" in (lost.failed or "")

@@ -33,6 +33,7 @@ def edit(
     spec: Annotated[Optional[Path], typer.Option("--spec", help="The structured task (JSON: text, start, fetch, deliver) for the offline controller.")] = None,
     name: Annotated[Optional[str], typer.Option("--name", help="Variant name (default: from the task's words).")] = None,
     planner: Annotated[EditPlanner, typer.Option(help="Who checks and provisions: the offline controller or Claude.")] = EditPlanner.offline,
+    settle: Annotated[bool, typer.Option("--settle", help="Let AI2-THOR settle the placed objects and write their poses back (needs mansion[ai2thor]).")] = False,
 ) -> None:
     """Edit a building for a task: check each precondition, provision what is missing, confirm
     the oracle agent can do the task, and save the variant under BUILDING/variants/NAME/."""
@@ -45,7 +46,12 @@ def edit(
             raise _fail("give the task: --spec FILE (offline) or a request in words with --planner anthropic")
         if planner is EditPlanner.offline and task is None:
             raise _fail("a request in words needs --planner anthropic; the offline controller takes --spec FILE")
-        result = edit_building(building, task, text=request, name=name, planner=planner.value)
+        controller = None
+        if settle:
+            from mansion.sim.thor import thor_controller
+
+            controller = thor_controller()
+        result = edit_building(building, task, text=request, name=name, planner=planner.value, settle_with=controller)
     except MansionError as exc:
         raise _fail(str(exc)) from None
     except OSError as exc:

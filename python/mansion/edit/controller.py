@@ -63,9 +63,10 @@ def _oracle(scenes_dir: Path, task: TaskSpec) -> tuple[bool, int, float, str]:
 
 def edit_building(building_dir: str | Path, spec: EditSpec | None = None, *, text: str | None = None,
                   name: str | None = None, planner: str = "offline", client: Any = None,
-                  max_turns: int | None = None) -> EditResult:
+                  max_turns: int | None = None, settle_with: Any = None) -> EditResult:
     """Edit the building for the task (``spec`` offline; ``text`` with ``planner="anthropic"``)
-    and save the variant when the task has become executable. Never changes the base files."""
+    and save the variant when the task has become executable. Never changes the base files.
+    ``settle_with``: an AI2-THOR controller in which the placed objects settle (optional)."""
     ws = Workspace(building_dir)
     tools = SceneTools(ws)
     log = EditLog()
@@ -91,6 +92,18 @@ def edit_building(building_dir: str | Path, spec: EditSpec | None = None, *, tex
         result.edits = [e.text for e in tools.edits]
         return result
     result.edits = [e.text for e in tools.edits]
+    if settle_with is not None:
+        from mansion.edit.settle import settle
+
+        what = "the placed objects stay where they were placed in AI2-THOR"
+        log.precondition(what)
+        try:
+            for line in settle(tools, settle_with):
+                log.edit(line)
+        except EditError as exc:
+            result.failed = f"precondition not met: {what}: {exc}"
+            log.result(result.failed, False)
+            return result
     what = "the oracle agent completes the task on the edited building"
     log.precondition(what)
     task = _task_spec(ws, name, spec, got, CHECK_BUDGET)
