@@ -349,6 +349,24 @@ def test_apply_then_revert_restores_the_base_byte_for_byte(office: Path, tmp_pat
         apply_variant(root, "nope")
 
 
+def test_patch_records_moves_removals_and_changes(tools: SceneTools) -> None:
+    from mansion.edit.variants import diff_house
+
+    st = tools.ws.floor(1)
+    table = _kitchen(tools, "DiningTable")
+    book, bowl = (c.id for c in st.objects[table].obj.children[:2])
+    counter = next(i for i in tools.ws.of_type(1, "CounterTop") if i.room == "kitchen").id
+    tools.place_on_surface(book, counter, floor=1)
+    tools.remove_object(object_id=bowl, floor=1)
+    tools.place_in_container("Apple_1", _kitchen(tools, "Fridge"), floor=1, open=True)
+    base, now = json.loads(tools.ws.base_bytes(1)), json.loads(tools.ws.house_bytes(1))
+    p = diff_house(base, now, 1, "floor_1.json", "sha")
+    assert [m.id for m in p.moved] == [book] and p.moved[0].parent == counter
+    assert [r.id for r in p.removed] == [bowl]
+    assert [a.object["assetId"] for a in p.added] == ["Apple_1"] and p.changed[0].set == {"openness": 1.0}
+    assert (json.dumps(patch_house(base, p), indent=1) + "\n").encode() == tools.ws.house_bytes(1)
+
+
 # -- the command line ---------------------------------------------------------------------------
 def test_cli_edit_list_apply_revert(office: Path, tmp_path: Path) -> None:
     root = _copy(office, tmp_path)
@@ -409,6 +427,13 @@ def test_react_controller_from_recorded_tool_use(office: Path, tmp_path: Path) -
     assert [t.object_type for t in r.task.targets] == ["Apple", "WineBottle"]
     assert any(line.text.startswith("SubmitTask: accepted") for line in r.log.lines)
     assert run_task(BuildingEnv(root, variant="paper"), r.task, OracleAgent).success
+
+
+def test_cli_anthropic_without_a_key_says_so(office: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("ANTHROPIC_API_KEY", raising=False)
+    result = runner.invoke(app, ["edit", str(office), PAPER["text"], "--planner", "anthropic"])
+    assert result.exit_code == 2 and "ANTHROPIC_API_KEY" in result.output
+    assert not (office / "variants" / "i-need-a-task-where-the-agent-starts").exists()
 
 
 def test_react_controller_that_never_submits_fails_clearly(office: Path, tmp_path: Path) -> None:
