@@ -121,8 +121,6 @@ def test_every_edited_floor_validates(office: Path, paper_variant: Any) -> None:
         assert [q for q in found if q.severity == "error"] == []
         assert sorted(q.rule for q in found) == sorted(q.rule for q in validate_path(office / "scenes" / p.house)), \
             "no new warning either"
-        result = runner.invoke(app, ["validate", str(edited)])
-        assert result.exit_code == 0, result.output
 
 
 def test_patch_replays_to_the_variant_scenes(office: Path, paper_variant: Any) -> None:

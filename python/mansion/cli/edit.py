@@ -33,7 +33,7 @@ def edit(
     spec: Annotated[Optional[Path], typer.Option("--spec", help="The structured task (JSON: text, start, fetch, deliver) for the offline controller.")] = None,
     name: Annotated[Optional[str], typer.Option("--name", help="Variant name (default: from the task's words).")] = None,
     planner: Annotated[EditPlanner, typer.Option(help="Who checks and provisions: the offline controller or Claude.")] = EditPlanner.offline,
-    settle: Annotated[bool, typer.Option("--settle", help="Let AI2-THOR settle the placed objects and write their poses back (needs mansion[ai2thor]).")] = False,
+    settle: Annotated[bool, typer.Option("--settle", help="Let AI2-THOR settle the placed objects and write their poses back (needs the simulator: the ai2thor extra).")] = False,
 ) -> None:
     """Edit a building for a task: check each precondition, provision what is missing, confirm
     the oracle agent can do the task, and save the variant under BUILDING/variants/NAME/."""
@@ -104,7 +104,7 @@ def apply(building: BuildingArg, name: Annotated[str, typer.Argument(help="The v
 
 @variants_app.command("revert")
 def revert(building: BuildingArg) -> None:
-    """Restore the building's own house JSONs, byte for byte, after ``apply``."""
+    """Restore the building's own house JSONs, byte for byte, after apply."""
     from mansion.edit.variants import revert_variant
 
     try:

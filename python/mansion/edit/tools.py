@@ -20,7 +20,6 @@ provisioning it would not make any task executable.
 
 from __future__ import annotations
 
-import math
 from dataclasses import asdict, dataclass
 from typing import Any, Literal
 
@@ -254,7 +253,7 @@ class SceneTools:
             })
             op = "add"
         obj.position.x, obj.position.y, obj.position.z = slot.x, slot.y, slot.z
-        obj.rotation.x, obj.rotation.y, obj.rotation.z = 0.0, float(slot.yaw if not math.isclose(slot.yaw, 0.0) else 0.0), 0.0
+        obj.rotation.x, obj.rotation.y, obj.rotation.z = 0.0, slot.yaw + 0.0, 0.0  # + 0.0: no "-0.0" in the JSON
         obj.room = rec.room
         obj.layer = rec.obj.layer
         st.attach(obj, rec.id)
