@@ -119,8 +119,10 @@ class _Run:
             recs = self.ws.of_type(f.floor, kind)
             self.log.check(f"ListObjects(floor={f.floor}, {kind}): {', '.join(r.id for r in recs) or 'none'}", bool(recs))
             if not recs:
-                types = sorted({i.props.object_type for i in self.ws.floor(f.floor).objects.values() if i.props.receptacle})
-                raise PreconditionFailed(what, f"floor {f.floor} has no {kind} (its receptacles: {', '.join(types)})")
+                types = sorted({i.props.object_type for i in self.ws.floor(f.floor).objects.values()
+                                if i.props.receptacle and i.parent is None})
+                raise PreconditionFailed(what, f"floor {f.floor} has no {kind} (its furniture that holds things: "
+                                         f"{', '.join(types)})")
         else:
             recs = []
         found = self._find(f, recs)
