@@ -49,8 +49,8 @@ def main() -> None:
         r = edit_building(folder, spec, name="snack-and-drink")
         seconds.append(time.perf_counter() - start)
         if not r.ok:
-            why = (r.failed or "").split(": ", 2)
-            failed[": ".join(why[1:])[:140]] += 1
+            why = (r.failed or "").split(": ", 2)  # "precondition not met", the precondition, why
+            failed[f"{why[1]}: {why[2].split(' (')[0]}" if len(why) == 3 else r.failed or ""] += 1
             print(f"seed {seed}: {r.failed}")
             continue
         done += 1
