@@ -539,3 +539,19 @@ def test_placed_objects_settle_in_the_simulator(office: Path, tmp_path: Path, pa
     lost = edit_building(_copy(office, tmp_path / "b"), EditSpec.model_validate(PAPER), name="lost",
                          settle_with=SettlingController(lose=apple))
     assert not lost.ok and f"did not spawn {apple}" in (lost.failed or "")
+
+
+def test_an_object_found_in_a_closed_container_gets_it_opened(office: Path, tmp_path: Path) -> None:
+    root = _copy(office, tmp_path)
+    ws = Workspace(root)
+    tools = SceneTools(ws)
+    fridge = _kitchen(tools, "Fridge")
+    bottle = tools.place_in_container("Wine_Bottle_1", fridge, floor=1, open=True)["placed"]
+    ws.floor(1).objects[fridge].obj.openness = 0.0  # the drink is in the fridge, which is shut
+    ws.building.house(1).to_json(root / "scenes" / "floor_1.json")
+    spec = {**PAPER, "fetch": [PAPER["fetch"][1]]}
+    r = edit_building(root, EditSpec.model_validate(spec), name="shut")
+    assert r.ok, r.failed
+    assert r.task.targets[0].object_id == bottle
+    assert r.edits == [f"opened {fridge} (Fridge)"]
+    assert run_task(BuildingEnv(root, variant="shut"), r.task, OracleAgent).success
