@@ -379,6 +379,9 @@ def test_cli_edit_list_apply_revert(office: Path, tmp_path: Path) -> None:
     assert f"variant: {root / 'variants' / 'paper'}" in out
     result = runner.invoke(app, ["variants", "list", str(root)])
     assert result.exit_code == 0 and "paper: 2 added, 1 changed" in result.output
+    result = runner.invoke(app, ["variants", "show", str(root), "paper"])
+    assert result.exit_code == 0 and "floor 1 (floor_1.json): 2 added, 0 moved, 0 removed, 1 changed" in result.output
+    assert "✓ OracleAgent: done" in result.output
     base = _digests(root)
     assert runner.invoke(app, ["variants", "apply", str(root), "paper"]).exit_code == 0
     assert _digests(root) != base

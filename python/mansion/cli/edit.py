@@ -14,7 +14,7 @@ from rich.markup import escape
 from mansion.cli.main import _fail
 from mansion.exceptions import MansionError
 
-variants_app = typer.Typer(help="Task variants of a building (mansion edit): list, apply, revert.", no_args_is_help=True)
+variants_app = typer.Typer(help="Task variants of a building (mansion edit): list, show, apply, revert.", no_args_is_help=True)
 
 BuildingArg = Annotated[Path, typer.Argument(help="A `mansion generate` output folder (or its scenes/ folder, or a manifest.json).")]
 
@@ -56,14 +56,7 @@ def edit(
         raise _fail(str(exc)) from None
     except OSError as exc:
         raise _fail(f"cannot write the variant: {exc.strerror or exc}") from None
-    for line in result.log.lines:
-        text = escape(line.text)
-        if line.kind == "precondition":
-            console.print(f"[bold]precondition[/bold]: {text}")
-        elif line.kind == "check":
-            console.print(f"  {_MARK[line.ok]} {text}")
-        elif line.kind == "edit":
-            console.print(f"  [cyan]+[/cyan] {text}")
+    _print_log(console, [(line.kind, line.text, line.ok) for line in result.log.lines])
     if not result.ok:
         Console(stderr=True, soft_wrap=True).print(f"[bold red]cannot make the task executable:[/bold red] {escape(result.failed or '')}")
         raise typer.Exit(code=1)
@@ -88,6 +81,34 @@ def list_(building: BuildingArg) -> None:
     for v in found:
         mark = " (applied)" if v.name == now else ""
         console.print(f"[bold]{escape(v.name)}[/bold]{mark}: {escape(v.summary())} — {escape(v.text)}")
+
+
+@variants_app.command("show")
+def show(building: BuildingArg, name: Annotated[str, typer.Argument(help="The variant.")]) -> None:
+    """A variant's task, its edits per floor and the log of checks and edits it was made with."""
+    from mansion.edit.variants import load_variant
+
+    try:
+        v = load_variant(building, name)
+    except MansionError as exc:
+        raise _fail(str(exc)) from None
+    console = Console(soft_wrap=True)
+    console.print(f"[bold]{escape(v.name)}[/bold] ({escape(v.planner)}): {escape(v.text)}")
+    for p in v.patch:
+        console.print(f"floor {p.floor} ({escape(p.house)}): {len(p.added)} added, {len(p.moved)} moved, "
+                      f"{len(p.removed)} removed, {len(p.changed)} changed")
+    _print_log(console, [(line["kind"], line["text"], line["ok"]) for line in v.log])
+
+
+def _print_log(console: Console, lines: list[tuple[str, str, bool | None]]) -> None:
+    for kind, raw, ok in lines:
+        text = escape(raw)
+        if kind == "precondition":
+            console.print(f"[bold]precondition[/bold]: {text}")
+        elif kind == "check":
+            console.print(f"  {_MARK[ok]} {text}")
+        elif kind == "edit":
+            console.print(f"  [cyan]+[/cyan] {text}")
 
 
 @variants_app.command("apply")
