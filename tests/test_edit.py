@@ -169,6 +169,12 @@ def test_a_precondition_that_cannot_be_met_is_named(office: Path, tmp_path: Path
     spec = {**PAPER, "fetch": [{"object_type": "Bottle", "floor": 1, "in": "Fridge"}]}
     r = edit_building(root, EditSpec.model_validate(spec), name="bottle")
     assert not r.ok and "cannot take" in (r.failed or "")
+    spec = {**PAPER, "fetch": [{"object_type": "Banana", "floor": 1, "on": "DiningTable"}]}
+    r = edit_building(root, EditSpec.model_validate(spec), name="banana")
+    assert not r.ok and "AI2-THOR has no object type 'Banana'" in (r.failed or "")
+    spec = {**PAPER, "fetch": [{"object_type": "apple", "floor": 1, "on": "dining table"}]}
+    r = edit_building(root, EditSpec.model_validate(spec), name="lower-case")
+    assert r.ok and r.task.targets[0].object_type == "Apple" and r.task.targets[0].receptacle_type == "DiningTable"
     with pytest.raises(EditError, match="--spec"):
         edit_building(root, None, text="I need a task", name="x")
 

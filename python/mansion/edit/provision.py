@@ -114,6 +114,7 @@ class _Run:
     # -- objects to fetch -----------------------------------------------------------------------
     def fetch(self, f: Fetch) -> TargetObject:
         what = self._begin(f"{_a(f.object_type)} {f.where()} on floor {f.floor}", f.floor)
+        f = f.model_copy(update={"object_type": _object_type(f.object_type, what)})
         kind = f.on or f.in_
         if kind is not None:
             recs = self.ws.of_type(f.floor, kind)
@@ -275,6 +276,19 @@ class _Run:
             self.log.check(text, r["ok"])
             if not r["ok"]:
                 raise PreconditionFailed(what, r["reason"])
+
+
+def _object_type(name: str, what: str) -> str:
+    """AI2-THOR's spelling of an object type ("apple", "wine bottle" → Apple, WineBottle)."""
+    from rapidfuzz import process
+
+    from mansion.placement.assets import database
+
+    types = {norm(t): t for t in database().types}
+    if norm(name) in types:
+        return types[norm(name)]
+    near = [m[0] for m in process.extract(name, sorted(types.values()), limit=3)]
+    raise PreconditionFailed(what, f"AI2-THOR has no object type {name!r} (nearest: {', '.join(near)})")
 
 
 def _a(word: str) -> str:
