@@ -471,6 +471,7 @@ def test_fetch_anywhere_goes_where_ai2thor_puts_it_most(office: Path, tmp_path: 
     assert run_task(BuildingEnv(root, variant="tomato"), r.task, OracleAgent).success
 
 
+@pytest.mark.slow  # filling four sofas to the brim takes a few hundred placements
 def test_a_full_destination_is_cleared_largest_first(office: Path, tmp_path: Path) -> None:
     root = _copy(office, tmp_path)
     ws = Workspace(root)
