@@ -9,7 +9,9 @@ socket is replaced. The fixture file is chosen from the request itself:
 - a key within the agent: the floor index for the topology, the parent room for the seed planner;
 - the attempt, from how many user turns the conversation has (a retry carries the previous answer
   and our list of problems), so ``<agent>_<key>.attempt1.json`` can be malformed and
-  ``<agent>_<key>.json`` (any later attempt) corrected.
+  ``<agent>_<key>.json`` (any later attempt) corrected. For the scene editing agent's ReAct loop
+  every turn is an attempt: ``editor_<variant>.attempt<k>.json`` answers after the k-th user turn
+  (the request, then each round of tool results).
 
 Every request the client sent is kept in ``Replay.requests`` so tests can look at what the model
 was told (the validation errors fed back, the preview image).
@@ -33,6 +35,7 @@ _AGENTS = {
     "seed planning assistant": "seed",
     "You are a floor plan reader": "t2d",
     "interior object planner": "objects",
+    "scene editing agent": "editor",
 }
 
 
@@ -71,6 +74,10 @@ class Replay:
             m = re.search(r"Room id: (\S+),", first)
             assert m, "the object planner prompt names its room"
             return f"objects_{m.group(1)}"
+        if agent == "editor":
+            m = re.search(r"Variant: (\S+)", first)
+            assert m, "the scene editor prompt names its variant"
+            return f"editor_{m.group(1)}"
         if agent == "seed":
             m = re.search(r"Parent room ID: (\S+),", first)
             assert m, "the seed prompt names its parent"

@@ -8,11 +8,16 @@ Keep the names stable: they are part of the binding contract.
 from __future__ import annotations
 
 __all__ = [
+    "ContainerClosedError",
+    "EditError",
+    "IncompatibleReceptacleError",
     "InfeasibleLayoutError",
     "InvalidBuildingError",
     "InvalidInputError",
     "MansionError",
     "PlannerError",
+    "SurfaceFullError",
+    "UnknownObjectError",
 ]
 
 
@@ -41,3 +46,25 @@ class InvalidBuildingError(MansionError):
 
     The message names the floor and the room, edge or core at fault.
     """
+
+
+class EditError(MansionError):
+    """A scene edit (``mansion edit``, :mod:`mansion.edit`) cannot be made; the message names the
+    object, receptacle or floor at fault."""
+
+
+class UnknownObjectError(EditError, InvalidInputError):
+    """No object, receptacle, room or asset of that id (or an id on several floors: give one)."""
+
+
+class SurfaceFullError(EditError):
+    """No free spot on (or in) the receptacle for the object without overlapping what is there."""
+
+
+class ContainerClosedError(EditError):
+    """The container is closed: nothing can be put inside until it is opened."""
+
+
+class IncompatibleReceptacleError(EditError):
+    """The receptacle cannot take the object: not a receptacle, the wrong kind (a surface for a
+    container), too small, or a type AI2-THOR's receptacle database never puts there."""

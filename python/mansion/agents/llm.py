@@ -125,13 +125,16 @@ class LLMClient:
 
         return {"format": {"type": "json_schema", "schema": anthropic.transform_schema(answer.model_json_schema())}}
 
-    def _send(self, agent: str, system: str, messages: list[dict[str, Any]], answer: type[BaseModel]) -> Any:
+    def _send(self, agent: str, system: str, messages: list[dict[str, Any]], answer: type[BaseModel] | None,
+              tools: list[dict[str, Any]] | None = None) -> Any:
         import anthropic
 
         extra: dict[str, Any] = {}
-        fmt = self._format(answer)
+        fmt = self._format(answer) if answer is not None else None
         if fmt is not None:
             extra["output_config"] = fmt
+        if tools is not None:
+            extra["tools"] = tools
         try:
             response = self.client.messages.create(
                 model=self.model, max_tokens=self.max_tokens, system=system,
@@ -150,6 +153,16 @@ class LLMClient:
         if getattr(response, "usage", None) is not None:
             self.usage.input_tokens += response.usage.input_tokens or 0
             self.usage.output_tokens += response.usage.output_tokens or 0
+        return response
+
+    def converse(self, agent: str, system: str, messages: list[dict[str, Any]], tools: list[dict[str, Any]]) -> Any:
+        """One turn of a tool-use conversation (a ReAct loop): the model's message, whose content
+        may hold ``tool_use`` blocks for the caller to run and answer with ``tool_result`` blocks.
+        API failures and refusals are :class:`PlannerError`, as in :meth:`ask`."""
+        response = self._send(agent, system, messages, None, tools)
+        if response.stop_reason == "refusal":
+            text = "".join(b.text for b in response.content if getattr(b, "type", "") == "text")
+            raise PlannerError(f"the model declined the {agent} request: {text.strip() or 'no reason given'}")
         return response
 
     def ask(

@@ -23,6 +23,7 @@ PROMPTS = {
     "building_program": "building_program.md",
     "floor_topology": "floor_topology.md",
     "object_planner": "object_planner.md",
+    "scene_editor": "scene_editor.md",
     "seed_planner": "seed_planner.md",
     "t2d_seeds": "t2d_seeds.md",
 }

@@ -33,7 +33,7 @@ from mansion.scene.house import HouseObject, Vec3
 from mansion.scene.poses import AGENT_Y, yaw_of
 from mansion.scene.validate import REACH
 from mansion.sim.grid import CELL, Path as Walk, _segment_distance, box_distance
-from mansion.sim.world import HELD_KEY, Building, FloorState, ObjectInfo
+from mansion.sim.world import HELD_KEY, Building, FloorState, ObjectInfo, variant_folder
 
 __all__ = ["SKILLS", "BuildingEnv", "SkillResult"]
 
@@ -68,17 +68,18 @@ def _text(s: str) -> str:
 
 class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
     """A building a robot can work in. ``building_dir``: a ``mansion generate`` output folder,
-    its ``scenes`` folder or a ``manifest.json``."""
+    its ``scenes`` folder or a ``manifest.json``; ``variant``: load the building's task variant
+    of that name instead (``mansion edit``)."""
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
 
     def __init__(
         self, building_dir: str | Path, *, cell: float = CELL, image: bool = False,
         image_size: int = 192, view_radius: float = VIEW_RADIUS, render_mode: str | None = None,
-        backend: Any = None,
+        backend: Any = None, variant: str | None = None,
     ):
         super().__init__()
-        self.path = Path(building_dir)
+        self.path = Path(building_dir) if variant is None else variant_folder(building_dir, variant)
         self.cell = cell
         self.view_radius = view_radius
         self.image_size = image_size

@@ -128,8 +128,10 @@ class BuildingMap:
         """Where ``GoToObject`` may end: within reach of the object, else within interaction."""
 
         def mask(st: FloorState) -> np.ndarray:
-            info = st.objects[object_id]
+            info = st.objects.get(object_id)
             g = st.grid
+            if info is None:  # not on that floor (a task for an edited variant of the building)
+                return np.zeros(g.free.shape, dtype=bool)
             px, pz = g.centres()
             d = box_distance(px, pz, info.centre, info.props.width, info.props.depth, info.obj.rotation.y)
             # GoToObject stands within reach when it can, else within interaction distance

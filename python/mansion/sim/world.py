@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -26,7 +27,7 @@ from mansion.scene.manifest import BuildingManifest, ManifestCore
 from mansion.scene.validate import AGENT_RADIUS
 from mansion.sim.grid import CELL, NavGrid, box_distance
 
-__all__ = ["Building", "FloorState", "ObjectInfo", "find_manifest", "props"]
+__all__ = ["Building", "FloorState", "ObjectInfo", "building_root", "find_manifest", "props", "variant_folder"]
 
 #: Key we add to a held object's record in the house JSON (the loader ignores unknown keys).
 HELD_KEY = "heldBy"
@@ -43,6 +44,7 @@ class Props:
     receptacle: bool
 
 
+@cache
 def props(asset_id: str) -> Props:
     rec = asset_ids().get(asset_id)
     if rec is None:
@@ -84,6 +86,22 @@ def find_manifest(path: str | Path) -> Path:
         if candidate.is_file():
             return candidate
     raise InvalidInputError(f"{str(p)!r} is no building: no manifest.json nor scenes/manifest.json")
+
+
+def building_root(manifest_path: Path) -> Path:
+    """The folder ``mansion generate`` wrote (task variants live in its ``variants/``): the
+    parent of a ``scenes`` folder, else the manifest's own folder."""
+    folder = manifest_path.parent
+    return folder.parent if folder.name == "scenes" else folder
+
+
+def variant_folder(path: str | Path, name: str) -> Path:
+    """The folder of task variant ``name`` of a building (``mansion edit`` writes it:
+    ``variants/<name>/scenes/`` holds its house JSONs and manifest)."""
+    folder = building_root(find_manifest(path)) / "variants" / name
+    if name.startswith(".") or not (folder / "scenes" / "manifest.json").is_file():
+        raise InvalidInputError(f"{str(path)!r} has no task variant {name!r} (mansion variants list)")
+    return folder
 
 
 class FloorState:
