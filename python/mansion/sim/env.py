@@ -370,10 +370,11 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
     # -- navigation skills ----------------------------------------------------------------------
     def _GoToRoom(self, room: str) -> SkillResult:  # noqa: N802
         st = self.state
-        if room not in st.rooms:
+        # a core by its id, or by its room on this floor (a MansionWorld building's F2_stair)
+        core = self.building.core_named(self.floor, room)
+        if room not in st.rooms and core is None:
             return SkillResult(False, f"no room {room!r} on floor {self.floor}")
         g = st.grid
-        core = next((c for c in self.building.cores_on(self.floor) if c.id == room), None)
         px, pz = g.centres()
         if core is not None:
             landing = self.building.landing(core, self.floor)
@@ -767,7 +768,7 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
         out = []
         for rid, room in self.state.rooms.items():
             pos = self.state.landmarks[rid]
-            core = next((c for c in self.building.cores_on(self.floor) if c.id == rid), None)
+            core = self.building.core_named(self.floor, rid)
             if core is not None:
                 landing = self.building.landing(core, self.floor)
                 if landing is not None:
