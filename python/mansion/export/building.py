@@ -22,6 +22,7 @@ from mansion.export.model import BuildingModel, Node
 from mansion.export.walls import WallFrame, hole_nodes, wall_nodes
 from mansion.scene.house import House
 from mansion.scene.manifest import BuildingManifest, ManifestCore
+from mansion.scene.mansionworld import is_mansionworld, read_mansionworld
 
 __all__ = ["building_model", "find_manifest"]
 
@@ -66,7 +67,14 @@ def _slab_thickness(floors: list[_Floor], i: int) -> float:
 
 def building_model(path: str | os.PathLike[str]) -> BuildingModel:
     """Read a building folder, its manifest, or a lone house JSON, and build its model (see
-    :mod:`mansion.export`)."""
+    :mod:`mansion.export`). A MansionWorld folder (``floor_1.json`` …) is read as
+    :mod:`mansion.scene.mansionworld` reads it."""
+    if is_mansionworld(path):
+        world = read_mansionworld(path)
+        m = world.manifest
+        floors = [_Floor(f.index, f.house, f.elevation, f.height, f.ceiling_height) for f in m.floors]
+        info = {"id": m.id, "description": m.description, "buildingType": m.building_type, "seed": m.seed}
+        return _model(m.id, info, floors, {k: world.house(k) for k in world.houses}, m.cores)
     file = find_manifest(path)
     try:
         data = json.loads(file.read_text(encoding="utf-8"))
