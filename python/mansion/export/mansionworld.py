@@ -122,8 +122,9 @@ def room_names(rooms: list[dict[str, Any]], n: int, cores: dict[str, str]) -> di
 
 
 class _Renamer:
-    """Renames room ids inside other ids (``wall|0|kitchen|2``, ``kitchen|fridge``), as a whole
-    word: never inside a longer name."""
+    """Renames the room id inside another id (``wall|0|kitchen|2``, ``kitchen|fridge``): its
+    first whole-word room id only (``toilet_1|toilet_1`` is the toilet of room ``toilet_1``),
+    never a part of a longer name."""
 
     def __init__(self, names: dict[str, str]):
         self.names = names
@@ -133,7 +134,7 @@ class _Renamer:
     def __call__(self, s: Any) -> Any:
         if not isinstance(s, str) or self.pattern is None:
             return s
-        return self.pattern.sub(lambda m: self.names[m.group(1)], s)
+        return self.pattern.sub(lambda m: self.names[m.group(1)], s, count=1)
 
     def room(self, rid: Any) -> Any:
         return self.names.get(rid, rid)
