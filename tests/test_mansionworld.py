@@ -39,9 +39,9 @@ DOOR_ID = re.compile(r"^door\|(\d+)\|([^|]+)\|([^|]+)$")
 
 @pytest.fixture(scope="session")
 def office(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """Three floors, a stair and an elevator serving all of them."""
+    """Three floors, a stair and two elevators serving all of them."""
     root = tmp_path_factory.mktemp("mw_office")
-    b = generate_building("a three-storey office", floors=3, seed=0)
+    b = generate_building("a three-storey office with two elevators", floors=3, seed=0)
     write_scenes(b, root / "scenes")
     return root
 
@@ -71,9 +71,18 @@ def _walk(items: list[dict[str, Any]], parent: str | None = None) -> list[tuple[
     return out
 
 
+def _core_names(manifest: BuildingManifest) -> dict[str, str]:
+    """Their core rooms' names: ``stair``, ``stair_2``, …, ``elevator``, ``elevator_2``, …"""
+    out = {}
+    for kind in ("stair", "elevator"):
+        for k, cid in enumerate(sorted(c.id for c in manifest.cores if c.kind == kind), start=1):
+            out[cid] = kind if k == 1 else f"{kind}_{k}"
+    return out
+
+
 def _expected_names(house: dict[str, Any], n: int, cores: dict[str, str]) -> dict[str, str]:
     """Their naming, from their documentation: ``F{n}_`` before every room id, the cores
-    ``F{n}_stair`` / ``F{n}_elevator``."""
+    ``F{n}_stair`` / ``F{n}_elevator`` (``cores``: room id → that name)."""
     return {r["id"]: f"F{n}_{cores.get(r['id'], r['id'])}" for r in house["rooms"]}
 
 
@@ -84,14 +93,13 @@ def test_export_is_their_layout(office: Path, exported: Path) -> None:
     floors = _floors(exported)
     assert sorted(floors) == [1, 2, 3] and not (exported / "manifest.json").exists()
     assert is_mansionworld(exported) and not is_mansionworld(office / "scenes")
-    kinds = {c.kind: c for c in manifest.cores}
-    assert set(kinds) == {"stair", "elevator"}
+    assert sorted(c.kind for c in manifest.cores) == ["elevator", "elevator", "stair"]
     for n, house in floors.items():
         meta = house["metadata"]
         assert meta["agent"] == meta["agentPoses"]["default"] == source[n - 1]["metadata"]["agentPoses"]["default"]
         rooms = {r["id"]: r for r in house["rooms"]}
         assert all(rid.startswith(f"F{n}_") for rid in rooms)
-        assert {f"F{n}_stair", f"F{n}_elevator"} <= set(rooms)
+        assert {f"F{n}_stair", f"F{n}_elevator", f"F{n}_elevator_2"} <= set(rooms)
         outside = []
         for i, d in enumerate(house["doors"]):
             m = DOOR_ID.match(d["id"])
@@ -100,19 +108,23 @@ def test_export_is_their_layout(office: Path, exported: Path) -> None:
                 outside.append(d["id"])
             else:
                 assert {d["room0"], d["room1"]} <= set(rooms)
-            if f"F{n}_elevator" in (d["room0"], d["room1"]):
-                assert d["room1"] == f"F{n}_elevator"  # their CallElevator steps into room1
+            lift = next((r for r in (d["room0"], d["room1"]) if r.startswith(f"F{n}_elevator")), None)
+            if lift is not None:
+                assert d["room1"] == lift  # their CallElevator steps into room1
         assert len(outside) == (1 if n == 1 else 0)
         objects = _walk(house["objects"])
         assert all(o["roomId"] in rooms for o, _ in objects)
-        fixtures = {o["assetId"]: o for o, _ in objects if o["id"].startswith("vertical_core_")}
-        stair = {a for a in fixtures if a.startswith("small_stair")}
+        fixtures = [o for o, _ in objects if o["id"].startswith("vertical_core_")]
+        stair = {o["assetId"] for o in fixtures if o["assetId"].startswith("small_stair")}
         assert stair == {"small_stair", "small_stair_flat"} - ({"small_stair"} if n == 3 else set()) \
             - ({"small_stair_flat"} if n == 1 else set())
-        assert "elevator_panel_4" in fixtures  # three floors: the smallest panel that has them
-        for asset, o in fixtures.items():
-            room = f"F{n}_elevator" if asset.startswith("elevator_panel") else f"F{n}_stair"
-            assert o["roomId"] == room and o["id"].endswith(f"({room})")
+        # three floors: the smallest panel that has them, one in each elevator
+        panels = sorted(o["roomId"] for o in fixtures if o["assetId"] == "elevator_panel_4")
+        assert panels == [f"F{n}_elevator", f"F{n}_elevator_2"]
+        for o in fixtures:
+            room = o["roomId"]
+            assert room.startswith(f"F{n}_elevator" if o["assetId"].startswith("elevator_panel") else f"F{n}_stair")
+            assert o["id"].endswith(f"({room})")
             poly = Polygon([(p["x"], p["z"]) for p in rooms[room]["floorPolygon"]])
             assert poly.buffer(1e-6).contains(Point(o["position"]["x"], o["position"]["z"]))
         House.parse(house)
@@ -125,7 +137,7 @@ def test_round_trip(office: Path, exported: Path) -> None:
     world = read_mansionworld(exported)
     assert [f.index for f in world.manifest.floors] == [1, 2, 3]
     assert world.fixtures[1] and all(all(f.startswith("vertical_core_") for f in v) for v in world.fixtures.values())
-    core_name = {c.id: c.kind for c in manifest.cores}
+    core_name = _core_names(manifest)
     for k, orig in source.items():
         n = k + 1
         back = world.houses[n]
@@ -162,7 +174,7 @@ def test_round_trip(office: Path, exported: Path) -> None:
     for c, w in zip(manifest.cores, world.manifest.cores, strict=True):
         assert (w.kind, w.x, w.z, w.floors) == (c.kind, c.x, c.z, [k + 1 for k in c.floors])
         for lo, lw in zip(c.landings, w.landings, strict=True):
-            assert lw.floor == lo.floor + 1 and lw.core_room == f"F{lw.floor}_{c.kind}"
+            assert lw.floor == lo.floor + 1 and lw.core_room == f"F{lw.floor}_{core_name[c.id]}"
             assert lw.room == f"F{lw.floor}_{lo.room}" and lw.pose == lo.pose
             assert lw.door is not None and lw.door.startswith("door|")
     # their layout read and written again is the same bytes
@@ -184,7 +196,7 @@ def test_landings_found_without_mansion_records(exported: Path, tmp_path: Path) 
         (bare / p.name).write_text(json.dumps(house))
     world = read_mansionworld(bare)
     recorded = read_mansionworld(exported)
-    assert [c.id for c in world.manifest.cores] == ["stair", "elevator"]
+    assert [c.id for c in world.manifest.cores] == ["stair", "elevator", "elevator_2"]
     for c, r in zip(world.manifest.cores, recorded.manifest.cores, strict=True):
         assert (c.kind, c.x, c.z, c.floors) == (r.kind, r.x, r.z, r.floors)
         for a, b in zip(c.landings, r.landings, strict=True):
@@ -415,9 +427,15 @@ def _handmade(folder: Path) -> None:
         (folder / f"floor_{n}.json").write_text(json.dumps(house, indent=1))
 
 
-def test_handmade_building_runs_in_building_env(tmp_path: Path) -> None:
-    folder = tmp_path / "theirs"
+@pytest.fixture(scope="session")
+def theirs(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    folder = tmp_path_factory.mktemp("mw_handmade") / "theirs"
     _handmade(folder)
+    return folder
+
+
+def test_handmade_building_runs_in_building_env(theirs: Path, tmp_path: Path) -> None:
+    folder = theirs
     env = BuildingEnv(folder)
     b = env.building
     assert b.floors == [1, 2]
@@ -446,5 +464,8 @@ def test_handmade_building_runs_in_building_env(tmp_path: Path) -> None:
     again = _floors(out)
     assert {o["assetId"] for o in again[1]["objects"]} == {"Apple_1", "small_stair", "elevator_panel_4"}
     assert {o["assetId"] for o in again[2]["objects"]} == {"small_stair_flat", "elevator_panel_4"}
-    counts = check_with_mansion_api(folder)
+
+
+def test_mansion_api_reads_the_handmade_building(theirs: Path) -> None:
+    counts = check_with_mansion_api(theirs)
     assert counts["floors their graph joins whole"] == 2 and counts["door edges"] == 6
