@@ -14,6 +14,8 @@ What is written into the output folder (their conventions, see :mod:`mansion.sce
   stair but its top one, ``small_stair_flat`` on every floor but its bottom one, an
   ``elevator_panel_N`` (N the smallest of 4, 5, 6, 8, 10 that is at least the floors served) on an
   elevator's side wall, named ``vertical_core_…_k (room)`` as their generator names them;
+- each room's outline with a corner wherever another room's corner meets its edge (the same
+  shape: their gym finds openings between rooms only so, see :func:`_t_junctions`);
 - doors ``door|{i}|{room0}|{room1}``, the outside door with ``room1 = "exterior"``; an elevator's
   door has the elevator as ``room1`` (their ``CallElevator`` steps into ``room1``): where mansion
   had it as ``room0`` the door is turned over (walls swapped, hole mirrored into the other wall's
@@ -176,6 +178,35 @@ def _turn_over(door: dict[str, Any], walls: dict[str, Wall]) -> None:
     door["assetPosition"] = {**pos, "x": at[0], "y": at[1]}
 
 
+def _t_junctions(rooms: list[dict[str, Any]]) -> None:
+    """Put a corner in each room's outline wherever another room's corner meets its edge.
+
+    Their gym joins two rooms through an opening when the strips along the rooms' edges (each
+    edge shortened by 0.11 m at both ends, widened 0.2 m) overlap and no solid wall crosses the
+    overlap; an edge running past the end of an opening, where a solid wall meets it, carries its
+    strip across that wall and the opening is lost. Split there, each strip stops short of it.
+    The rooms' shapes do not change (the new corners lie on their edges)."""
+    corners = {(float(p["x"]), float(p["z"])) for r in rooms for p in r.get("floorPolygon") or []}
+    for room in rooms:
+        ring = room.get("floorPolygon") or []
+        out = []
+        for i, a in enumerate(ring):
+            b = ring[(i + 1) % len(ring)]
+            out.append(a)
+            ax, az, bx, bz = float(a["x"]), float(a["z"]), float(b["x"]), float(b["z"])
+            length = math.hypot(bx - ax, bz - az)
+            if length <= 0:
+                continue
+            ux, uz = (bx - ax) / length, (bz - az) / length
+            inner = []
+            for cx, cz in corners:
+                t = (cx - ax) * ux + (cz - az) * uz
+                if 1e-6 < t < length - 1e-6 and abs((cx - ax) * uz - (cz - az) * ux) < 1e-6:
+                    inner.append((t, cx, cz))
+            out += [{**a, "x": cx, "z": cz} for _, cx, cz in sorted(inner)]
+        room["floorPolygon"] = out
+
+
 def _box(room: dict[str, Any]) -> tuple[float, float, float, float]:
     xs = [float(p["x"]) for p in room["floorPolygon"]]
     zs = [float(p["z"]) for p in room["floorPolygon"]]
@@ -287,6 +318,7 @@ def mansionworld_floor(
             pass
     fixtures: list[dict[str, Any]] = []
     rank = {cid: int(name.rsplit("_", 1)[1]) if "_" in name else 1 for cid, name in names_of.items()}
+    _t_junctions(rooms)
     for room in rooms:
         old_id = str(room["id"])
         room["id"] = names[old_id]
