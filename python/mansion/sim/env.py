@@ -68,7 +68,8 @@ def _text(s: str) -> str:
 
 class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
     """A building a robot can work in. ``building_dir``: a ``mansion generate`` output folder,
-    its ``scenes`` folder or a ``manifest.json``."""
+    its ``scenes`` folder, a ``manifest.json``, or a MansionWorld folder (``floor_1.json`` …;
+    :mod:`mansion.scene.mansionworld`; its floors keep their numbers 1, 2, …)."""
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
 
