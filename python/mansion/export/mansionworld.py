@@ -38,7 +38,7 @@ from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError
 from mansion.scene.databases import hole_asset_position
 from mansion.scene.house import House, Wall
-from mansion.scene.manifest import BuildingManifest, ManifestCore
+from mansion.scene.manifest import ManifestCore
 from mansion.scene.mansionworld import (
     ELEVATOR_PANEL,
     ELEVATOR_PANEL_SIZES,
@@ -48,8 +48,6 @@ from mansion.scene.mansionworld import (
     STAIR_FLAT_ASSET,
     door_centre,
     floor_file,
-    is_mansionworld,
-    read_mansionworld,
     room_prefix,
     strip_prefix,
 )
@@ -70,25 +68,10 @@ _CORE_WORDS = ((re.compile("stairs?", re.I), "steps"), (re.compile("elevator", r
 def _source(path: str | os.PathLike[str]) -> tuple[list[ManifestCore], dict[int, dict[str, Any]]]:
     """The cores and each floor's house (JSON) of a mansion building folder, a MansionWorld
     folder or a lone house JSON."""
-    p = Path(path)
-    if is_mansionworld(p):
-        mw = read_mansionworld(p)
-        return mw.manifest.cores, mw.houses
-    from mansion.export.building import find_manifest
+    from mansion.export.building import read_building
 
-    file = find_manifest(p)
-    try:
-        data = json.loads(file.read_text(encoding="utf-8"))
-    except (OSError, ValueError) as exc:
-        raise InvalidInputError(f"cannot read {str(file)!r}: {exc}") from exc
-    if isinstance(data, dict) and "rooms" in data and "floors" not in data:
-        House.parse(data, source=str(file))
-        return [], {0: data}
-    manifest = BuildingManifest.load(file)
-    houses = {}
-    for f in manifest.floors:
-        houses[f.index] = House.load(file.parent / f.house).to_dict()
-    return manifest.cores, houses
+    b = read_building(path)
+    return b.cores, {k: h.to_dict() for k, h in b.houses.items()}
 
 
 def core_names(cores: list[ManifestCore]) -> dict[str, str]:

@@ -331,7 +331,8 @@ def _link_cores(floors: dict[int, dict[str, Any]]) -> list[_CoreRooms]:
         first = g.rooms[min(g.rooms)]
         records = {((r.get("metadata") or {}).get("core") or {}).get("id")
                    for n, rid in g.rooms.items() for r in floors[n]["rooms"] if r["id"] == rid}
-        name = records.pop() if len(records) == 1 and None not in records else strip_prefix(first)
+        # mansion's own export keeps its core ids in the rooms' records; else their room name
+        name = str(records.pop()) if len(records) == 1 and None not in records else strip_prefix(first)
         base, k = name, 2
         while name in used:
             name, k = f"{base}_{k}", k + 1
