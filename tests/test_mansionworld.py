@@ -83,8 +83,18 @@ def _core_names(manifest: BuildingManifest) -> dict[str, str]:
 
 def _expected_names(house: dict[str, Any], n: int, cores: dict[str, str]) -> dict[str, str]:
     """Their naming, from their documentation: ``F{n}_`` before every room id, the cores
-    ``F{n}_stair`` / ``F{n}_elevator`` (``cores``: room id → that name)."""
-    return {r["id"]: f"F{n}_{cores.get(r['id'], r['id'])}" for r in house["rooms"]}
+    ``F{n}_stair`` / ``F{n}_elevator`` (``cores``: room id → that name); as the export documents,
+    a part of a room (``corridor|1``) without the ``|`` their door ids split on, and the words
+    ``stair`` / ``elevator`` out of the other rooms' ids."""
+    out = {}
+    for r in house["rooms"]:
+        name = cores.get(r["id"])
+        if name is None:
+            name = re.sub(r"[^A-Za-z0-9_&]", "_", r["id"].replace("|", "__"))
+            name = re.sub("elevator", "lift", re.sub("stairs?", "steps", name, flags=re.I), flags=re.I)
+        out[r["id"]] = f"F{n}_{name}"
+    assert len(set(out.values())) == len(out)
+    return out
 
 
 # -- the export ----------------------------------------------------------------------------------
@@ -147,10 +157,12 @@ def assert_round_trip(office: Path, exported: Path, again_dir: Path) -> None:
     assert bool(world.fixtures[1]) == bool(manifest.cores)
     assert all(all(f.startswith("vertical_core_") for f in v) for v in world.fixtures.values())
     core_name = _core_names(manifest)
+    all_names: dict[int, dict[str, str]] = {}
     for k, orig in source.items():
         n = k + 1
         back = world.houses[n]
         names = _expected_names(orig, n, {c.room_on(k): core_name[c.id] for c in manifest.cores if k in c.floors})
+        all_names[k] = names
         # rooms: the same type and shape, with every corner they had and, added, the corners of
         # neighbours that meet their edges (see export.mansionworld._t_junctions)
         assert {names[r["id"]]: r["roomType"] for r in orig["rooms"]} == {r["id"]: r["roomType"] for r in back["rooms"]}
@@ -191,7 +203,7 @@ def assert_round_trip(office: Path, exported: Path, again_dir: Path) -> None:
         assert (w.kind, w.x, w.z, w.floors) == (c.kind, c.x, c.z, [k + 1 for k in c.floors])
         for lo, lw in zip(c.landings, w.landings, strict=True):
             assert lw.floor == lo.floor + 1 and lw.core_room == f"F{lw.floor}_{core_name[c.id]}"
-            assert lw.room == f"F{lw.floor}_{lo.room}" and lw.pose == lo.pose
+            assert lw.room == all_names[lo.floor][lo.room] and lw.pose == lo.pose
             assert lw.door is not None and lw.door.startswith("door|")
     # their layout read and written again is the same bytes
     again = write_mansionworld(exported, again_dir)
