@@ -84,7 +84,7 @@ def find_manifest(path: str | Path) -> Path:
     for candidate in (p, p / "manifest.json", p / "scenes" / "manifest.json"):
         if candidate.is_file():
             return candidate
-    raise InvalidInputError(f"{str(p)!r} is no building: no manifest.json nor scenes/manifest.json")
+    raise InvalidInputError(f"{str(p)!r} is no building: no manifest.json nor scenes/manifest.json (nor floor_1.json, a MansionWorld building)")
 
 
 class FloorState:
