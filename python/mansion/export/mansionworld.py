@@ -190,6 +190,16 @@ def _t_junctions(rooms: list[dict[str, Any]]) -> None:
         room["floorPolygon"] = out
 
 
+def _walls(house: dict[str, Any]) -> dict[str, Wall]:
+    out = {}
+    for w in house.get("walls") or []:
+        try:
+            out[w["id"]] = Wall.model_validate(w)
+        except (KeyError, ValueError):
+            pass
+    return out
+
+
 def _box(room: dict[str, Any]) -> tuple[float, float, float, float]:
     xs = [float(p["x"]) for p in room["floorPolygon"]]
     zs = [float(p["z"]) for p in room["floorPolygon"]]
@@ -259,12 +269,7 @@ def mansionworld_floor(
     rooms = house.get("rooms") or []
     names = room_names(rooms, n, {rid: names_of[c.id] for rid, c in here.items()})
     rename = _Renamer(names)
-    walls_before = {}
-    for w in house.get("walls") or []:
-        try:
-            walls_before[w["id"]] = Wall.model_validate(w)
-        except (KeyError, ValueError):
-            pass
+    walls_before = _walls(house)
     kind_of = {rid: c.kind for rid, c in here.items()}
     doors: dict[str, str] = {}
     for i, d in enumerate(house.get("doors") or []):
@@ -293,12 +298,7 @@ def mansionworld_floor(
         if light.get("roomId") is not None:
             light["roomId"] = rename.room(light["roomId"])
     _objects(house.get("objects") or [], rename)
-    walls_after = {}
-    for w in house.get("walls") or []:
-        try:
-            walls_after[w["id"]] = Wall.model_validate(w)
-        except (KeyError, ValueError):
-            pass
+    walls_after = _walls(house)
     fixtures: list[dict[str, Any]] = []
     rank = {cid: int(name.rsplit("_", 1)[1]) if "_" in name else 1 for cid, name in names_of.items()}
     _t_junctions(rooms)
