@@ -218,7 +218,7 @@ def _furnishing_summary(manifest_path: Path) -> str:
 
 @app.command()
 def validate(
-    paths: Annotated[list[Path], typer.Argument(help="House JSONs, manifest.json files, or building folders (with manifest.json, scenes/manifest.json or house JSONs).")],
+    paths: Annotated[list[Path], typer.Argument(help="House JSONs, manifest.json files, or building folders (with manifest.json, scenes/manifest.json, MansionWorld floor_1.json, floor_2.json, ... or house JSONs).")],
     strict: Annotated[bool, typer.Option("--strict", help="Fail on warnings too.")] = False,
     json_out: Annotated[Optional[Path], typer.Option("--json", help="Write every problem (severity, rule, element, message, source) here as JSON.")] = None,
 ) -> None:

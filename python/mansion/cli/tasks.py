@@ -19,7 +19,7 @@ from mansion.exceptions import MansionError
 
 tasks_app = typer.Typer(help="Tasks in a building (the paper's cross-floor retrieval and delivery).", no_args_is_help=True)
 
-BuildingArg = Annotated[Path, typer.Argument(help="A `mansion generate` output folder (or its scenes/ folder, or a manifest.json).")]
+BuildingArg = Annotated[Path, typer.Argument(help="A `mansion generate` output folder (or its scenes/ folder, or a manifest.json), or a MansionWorld folder (floor_1.json, ...).")]
 
 
 @tasks_app.command("sample")

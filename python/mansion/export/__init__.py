@@ -38,6 +38,9 @@ def building_model(building: str | os.PathLike[str]) -> BuildingModel:
 def export_building(building: str | os.PathLike[str], fmt: str, out: str | os.PathLike[str]) -> Path:
     """Write the building folder ``building`` to ``out`` in format ``fmt`` (see :data:`FORMATS`)."""
     writer = export_format(fmt, out)
+    if writer.folder is not None:
+        return writer.folder(building, out)
+    assert writer.write is not None
     model = building_model(building)
     try:
         return writer.write(model, out)

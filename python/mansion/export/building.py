@@ -22,8 +22,9 @@ from mansion.export.model import BuildingModel, Node
 from mansion.export.walls import WallFrame, hole_nodes, wall_nodes
 from mansion.scene.house import House
 from mansion.scene.manifest import BuildingManifest, ManifestCore
+from mansion.scene.mansionworld import is_mansionworld, read_mansionworld
 
-__all__ = ["building_model", "find_manifest"]
+__all__ = ["BuildingFiles", "building_model", "find_manifest", "read_building"]
 
 
 @dataclass(frozen=True)
@@ -64,9 +65,28 @@ def _slab_thickness(floors: list[_Floor], i: int) -> float:
     return gap if gap > 0.01 else _MIN_SLAB
 
 
-def building_model(path: str | os.PathLike[str]) -> BuildingModel:
-    """Read a building folder, its manifest, or a lone house JSON, and build its model (see
-    :mod:`mansion.export`)."""
+@dataclass
+class BuildingFiles:
+    """A building as read from its files: what the exporters start from."""
+
+    name: str
+    info: dict[str, str | float | int]
+    floors: list[_Floor]
+    houses: dict[int, House]
+    cores: list[ManifestCore]
+
+
+def read_building(path: str | os.PathLike[str]) -> BuildingFiles:
+    """Read a building folder, its manifest, a lone house JSON (a one-floor building without
+    cores) or a MansionWorld folder (``floor_1.json`` …, read as :mod:`mansion.scene.mansionworld`
+    reads it)."""
+    if is_mansionworld(path):
+        world = read_mansionworld(path)
+        m = world.manifest
+        floors = [_Floor(f.index, f.house, f.elevation, f.height, f.ceiling_height) for f in m.floors]
+        info: dict[str, str | float | int] = {"id": m.id, "description": m.description,
+                                              "buildingType": m.building_type, "seed": m.seed}
+        return BuildingFiles(m.id, info, floors, {k: world.house(k) for k in world.houses}, m.cores)
     file = find_manifest(path)
     try:
         data = json.loads(file.read_text(encoding="utf-8"))
@@ -77,8 +97,8 @@ def building_model(path: str | os.PathLike[str]) -> BuildingModel:
         heights = [p.y for w in house.walls for p in w.polygon] or [3.0]
         ceiling = max(heights) - min(heights) or 3.0
         floor = _Floor(0, file.name, 0.0, ceiling + _MIN_SLAB, ceiling)
-        info: dict[str, str | float | int] = {"id": house.id or file.stem, "house": file.name}
-        return _model(house.id or file.stem, info, [floor], {0: house}, [])
+        info = {"id": house.id or file.stem, "house": file.name}
+        return BuildingFiles(house.id or file.stem, info, [floor], {0: house}, [])
     manifest = BuildingManifest.load(file)
     floors = [_Floor(f.index, f.house, f.elevation, f.height, f.ceiling_height) for f in manifest.floors]
     if not floors:
@@ -86,7 +106,14 @@ def building_model(path: str | os.PathLike[str]) -> BuildingModel:
     houses = {f.index: House.load(file.parent / f.house) for f in floors}
     info = {"id": manifest.id, "description": manifest.description,
             "buildingType": manifest.building_type, "seed": manifest.seed}
-    return _model(manifest.id, info, floors, houses, manifest.cores)
+    return BuildingFiles(manifest.id, info, floors, houses, manifest.cores)
+
+
+def building_model(path: str | os.PathLike[str]) -> BuildingModel:
+    """Read a building folder, its manifest, a lone house JSON or a MansionWorld folder
+    (:func:`read_building`), and build its model (see :mod:`mansion.export`)."""
+    b = read_building(path)
+    return _model(b.name, b.info, b.floors, b.houses, b.cores)
 
 
 def _model(

@@ -44,6 +44,13 @@ class CoreLanding(BaseModel):
     room: str = Field(description="The room the core's door opens into.")
     door: str | None = Field(description="The core's door on this floor (None: an opening).")
     pose: AgentPose = Field(description="Just outside the door, facing away from the core.")
+    core_room: str | None = Field(
+        default=None,
+        # left out when None, so mansion's own manifests keep their bytes
+        exclude_if=lambda v: v is None,
+        description="The core's own room on this floor when its id is not the core's (a "
+        "MansionWorld building names it per floor: F2_stair); None: the room is the core's id.",
+    )
 
 
 class ManifestCore(BaseModel):
@@ -55,6 +62,11 @@ class ManifestCore(BaseModel):
     z: tuple[float, float] = Field(description="z0, z1 of the core's box (scene z = plan y), m.")
     floors: list[int] = Field(min_length=1)
     landings: list[CoreLanding]
+
+    def room_on(self, floor: int) -> str:
+        """The id of the core's room on ``floor`` (its own id unless the landing names another)."""
+        landing = next((l for l in self.landings if l.floor == floor), None)
+        return landing.core_room if landing is not None and landing.core_room else self.id
 
 
 class BuildingManifest(BaseModel):

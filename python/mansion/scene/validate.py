@@ -81,6 +81,7 @@ __all__ = [
     "errors",
     "validate_building",
     "validate_house",
+    "validate_mansionworld",
     "validate_path",
     "validate_paths",
 ]
@@ -718,7 +719,28 @@ def validate_building(manifest_path: str | os.PathLike[str]) -> list[Problem]:
         problems += found
         if not any(p.rule == "schema" for p in found):
             houses[floor.index] = House.model_validate(data)
-    src = str(path)
+    return problems + _core_problems(manifest, houses, str(path))
+
+
+def validate_mansionworld(folder: str | os.PathLike[str]) -> list[Problem]:
+    """A building in the MANSION authors' layout (``floor_1.json`` …, no manifest): every floor
+    as mansion reads it (:mod:`mansion.scene.mansionworld`: their core fixtures left out, the
+    outside door as ProcTHOR's) and the cores the reader linked across the floors."""
+    from mansion.scene.mansionworld import read_mansionworld
+
+    world = read_mansionworld(folder)
+    problems: list[Problem] = []
+    houses: dict[int, House] = {}
+    for k, data in world.houses.items():
+        found = validate_house(data, source=str(world.files[k]))
+        problems += found
+        if not any(p.rule == "schema" for p in found):
+            houses[k] = House.model_validate(data)
+    return problems + _core_problems(world.manifest, houses, str(world.folder))
+
+
+def _core_problems(manifest: BuildingManifest, houses: dict[int, House], src: str) -> list[Problem]:
+    problems: list[Problem] = []
     for core in manifest.cores:
         box = (core.x[0], core.z[0], core.x[1], core.z[1])
         for k in core.floors:
@@ -727,7 +749,8 @@ def validate_building(manifest_path: str | os.PathLike[str]) -> list[Problem]:
                 if k not in {f.index for f in manifest.floors}:
                     problems.append(Problem("core-align", core.id, f"serves floor {k}, which the manifest lacks", src))
                 continue
-            room = next((r for r in house.rooms if r.id == core.id), None)
+            rid = core.room_on(k)
+            room = next((r for r in house.rooms if r.id == rid), None)
             if room is None:
                 problems.append(Problem("core-align", core.id, f"is not a room of floor {k}", src))
                 continue
@@ -738,8 +761,8 @@ def validate_building(manifest_path: str | os.PathLike[str]) -> list[Problem]:
             if rec is None or rec.kind != core.kind or sorted(rec.floors) != sorted(core.floors):
                 problems.append(Problem("core-align", core.id, f"on floor {k} lacks a core record matching the manifest", src))
             walls = {w.id: w for w in house.walls}
-            joined = any(core.id in (d.room0, d.room1) for d in house.doors) or any(
-                w.empty and w.room_id == core.id for w in walls.values()
+            joined = any(rid in (d.room0, d.room1) for d in house.doors) or any(
+                w.empty and w.room_id == rid for w in walls.values()
             )
             if not joined:
                 problems.append(Problem("core-align", core.id, f"has no door on floor {k}", src))
@@ -756,12 +779,17 @@ def validate_building(manifest_path: str | os.PathLike[str]) -> list[Problem]:
 
 def validate_path(path: str | os.PathLike[str]) -> list[Problem]:
     """A house JSON file, a building's ``manifest.json``, or a folder holding one (or
-    ``scenes/manifest.json``, or else house JSON files)."""
+    ``scenes/manifest.json``), a MansionWorld folder (``floor_1.json`` …), or else a folder of
+    house JSON files."""
     p = Path(path)
     if p.is_dir():
         for candidate in (p / "manifest.json", p / "scenes" / "manifest.json"):
             if candidate.is_file():
                 return validate_building(candidate)
+        from mansion.scene.mansionworld import is_mansionworld
+
+        if is_mansionworld(p):
+            return validate_mansionworld(p)
         houses = sorted(p.glob("*.json"))
         if not houses:
             raise InvalidInputError(f"{str(p)!r} holds no manifest.json (nor scenes/manifest.json) "

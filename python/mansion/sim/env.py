@@ -68,8 +68,9 @@ def _text(s: str) -> str:
 
 class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
     """A building a robot can work in. ``building_dir``: a ``mansion generate`` output folder,
-    its ``scenes`` folder or a ``manifest.json``; ``variant``: load the building's task variant
-    of that name instead (``mansion edit``)."""
+    its ``scenes`` folder, a ``manifest.json``, or a MansionWorld folder (``floor_1.json`` …;
+    :mod:`mansion.scene.mansionworld`; its floors keep their numbers 1, 2, …); ``variant``: load
+    the building's task variant of that name instead (``mansion edit``)."""
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 4}
 
@@ -371,10 +372,11 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
     # -- navigation skills ----------------------------------------------------------------------
     def _GoToRoom(self, room: str) -> SkillResult:  # noqa: N802
         st = self.state
-        if room not in st.rooms:
+        # a core by its id, or by its room on this floor (a MansionWorld building's F2_stair)
+        core = self.building.core_named(self.floor, room)
+        if room not in st.rooms and core is None:
             return SkillResult(False, f"no room {room!r} on floor {self.floor}")
         g = st.grid
-        core = next((c for c in self.building.cores_on(self.floor) if c.id == room), None)
         px, pz = g.centres()
         if core is not None:
             landing = self.building.landing(core, self.floor)
@@ -768,7 +770,7 @@ class BuildingEnv(gym.Env[dict[str, Any], dict[str, Any]]):
         out = []
         for rid, room in self.state.rooms.items():
             pos = self.state.landmarks[rid]
-            core = next((c for c in self.building.cores_on(self.floor) if c.id == rid), None)
+            core = self.building.core_named(self.floor, rid)
             if core is not None:
                 landing = self.building.landing(core, self.floor)
                 if landing is not None:

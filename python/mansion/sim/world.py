@@ -24,6 +24,7 @@ from mansion.placement.assets import database
 from mansion.scene.databases import asset_ids
 from mansion.scene.house import House, HouseObject
 from mansion.scene.manifest import BuildingManifest, ManifestCore
+from mansion.scene.mansionworld import MansionWorldBuilding, is_mansionworld, read_mansionworld
 from mansion.scene.validate import AGENT_RADIUS
 from mansion.sim.grid import CELL, NavGrid, box_distance
 
@@ -85,7 +86,7 @@ def find_manifest(path: str | Path) -> Path:
     for candidate in (p, p / "manifest.json", p / "scenes" / "manifest.json"):
         if candidate.is_file():
             return candidate
-    raise InvalidInputError(f"{str(p)!r} is no building: no manifest.json nor scenes/manifest.json")
+    raise InvalidInputError(f"{str(p)!r} is no building: no manifest.json nor scenes/manifest.json (nor floor_1.json, a MansionWorld building)")
 
 
 def building_root(manifest_path: Path) -> Path:
@@ -246,7 +247,8 @@ def _point(x: float, z: float) -> Point:
 @dataclass
 class Building:
     """A building's manifest and the current state of its floors (read from disk when first
-    needed; kept in memory as the agent changes them)."""
+    needed; kept in memory as the agent changes them). ``manifest_path`` may also be a
+    MansionWorld folder (:mod:`mansion.scene.mansionworld`): read as mansion reads its own."""
 
     manifest_path: Path
     manifest: BuildingManifest = field(init=False)
@@ -256,8 +258,20 @@ class Building:
     #: grids of floors as written, shared likewise; ``dirty`` floors have changed since
     grids: dict[int, NavGrid] = field(default_factory=dict)
     dirty: set[int] = field(default_factory=set)
+    #: the MansionWorld folder as read (None for mansion's own buildings)
+    world: MansionWorldBuilding | None = None
 
     def __post_init__(self) -> None:
+        if self.world is None and is_mansionworld(self.manifest_path):
+            self.world = read_mansionworld(self.manifest_path)
+        if self.world is not None:
+            # their layout has no manifest: the reader's, and its floors as mansion reads them
+            self.manifest_path = self.world.folder
+            self.manifest = self.world.manifest
+            self.floor_files = dict(self.world.files)
+            for k in self.world.houses:
+                self.raw.setdefault(k, self.world.house_bytes(k))
+            return
         self.manifest_path = find_manifest(self.manifest_path)
         self.manifest = BuildingManifest.load(self.manifest_path)
         if not self.manifest.floors:
@@ -296,12 +310,16 @@ class Building:
 
     def fresh(self) -> Building:
         """The building as written again, sharing what was read and built from the files."""
-        b = Building(self.manifest_path)
-        b.raw, b.grids = self.raw, self.grids
+        b = Building(self.manifest_path, raw=self.raw, world=self.world)
+        b.grids = self.grids
         return b
 
     def cores_on(self, floor: int) -> list[ManifestCore]:
         return [c for c in self.manifest.cores if floor in c.floors]
+
+    def core_named(self, floor: int, name: str) -> ManifestCore | None:
+        """The core of ``floor`` called ``name``: its id, or its room's id on that floor."""
+        return next((c for c in self.cores_on(floor) if name in (c.id, c.room_on(floor))), None)
 
     def landing(self, core: ManifestCore, floor: int) -> Any:
         return next((l for l in core.landings if l.floor == floor), None)
@@ -314,9 +332,9 @@ class Building:
             if k in self.houses:
                 self.houses[k].to_json(out / file.name)
             else:
-                from mansion._io import atomic_write_text
+                from mansion._io import atomic_write_bytes
 
-                atomic_write_text(out / file.name, file.read_text(encoding="utf-8"))
+                atomic_write_bytes(out / file.name, self.raw[k] if k in self.raw else file.read_bytes())
         return self.manifest.to_json(out / "manifest.json")
 
     def house_json(self, floor: int) -> dict[str, Any]:
