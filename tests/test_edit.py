@@ -8,15 +8,17 @@ from __future__ import annotations
 import hashlib
 import json
 import shutil
+import sys
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
 from mansion.building import generate_building
 from mansion.cli import app
-from mansion.edit import EditSpec, SceneTools, Workspace, edit_building
+from mansion.edit import EditSpec, SceneTools, Workspace, edit_building, search_assets, sentence_embedder
 from mansion.edit.surfaces import SETTLE
 from mansion.edit.variants import apply_variant, list_variants, load_variant, patch_house, revert_variant
 from mansion.exceptions import (
@@ -213,6 +215,48 @@ def test_search_assets_fuzzy_with_properties(tools: SceneTools) -> None:
         tools.search_assets("  ")
     with pytest.raises(InvalidInputError, match="no AI2-THOR asset"):
         tools.search_assets("apple", 3, ["Flying"])
+
+
+class _ConceptEmbedder:
+    """A stand-in embedding model with three meanings (a drink, a fruit, a seat): each word votes
+    for its meaning, so "something to drink" and "wine bottle" are close though no letters match."""
+
+    MEANING = {"drink": 0, "wine": 0, "beverage": 0, "apple": 1, "fruit": 1, "tomato": 1,
+               "sofa": 2, "chair": 2, "seat": 2}
+
+    def __init__(self) -> None:
+        self.calls = 0
+
+    def __call__(self, texts):
+        self.calls += 1
+        out = np.full((len(texts), 4), 0.0)
+        for i, t in enumerate(texts):
+            out[i, 3] = 0.1  # every text has a little of "other", so none is the zero vector
+            for w in t.lower().split():
+                if w in self.MEANING:
+                    out[i, self.MEANING[w]] += 1.0
+        return out
+
+
+def test_search_assets_by_meaning_with_an_embedder(tools: SceneTools) -> None:
+    lexical = tools.search_assets("something to drink", 3)["assets"]
+    assert all(a["object_type"] != "WineBottle" for a in lexical)
+    model = _ConceptEmbedder()
+    semantic = SceneTools(tools.ws, embedder=model)
+    found = semantic.search_assets("something to drink", 3)["assets"]
+    assert found[0]["object_type"] == "WineBottle" and found[0]["score"] > 90
+    seats = semantic.search_assets("a seat", 20, ["Receptacle"])["assets"]
+    assert {a["object_type"] for a in seats[:3]} <= {"Sofa", "Chair", "ArmChair"}
+    assert all("Receptacle" in a["properties"] for a in seats)
+    assert model.calls == 3  # the catalogue once, then one call per query
+    with pytest.raises(InvalidInputError, match="shape"):
+        search_assets("apple", 3, embedder=lambda texts: np.zeros((1, 4)))
+
+
+def test_semantic_search_without_its_extra_says_what_to_install(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(sys.modules, "sentence_transformers", None)
+    with pytest.raises(InvalidInputError, match=r"mansion\[semantic\]"):
+        sentence_embedder()
 
 
 def test_list_objects_joins_the_asset_database(tools: SceneTools) -> None:

@@ -34,6 +34,7 @@ def edit(
     name: Annotated[Optional[str], typer.Option("--name", help="Variant name (default: from the task's words).")] = None,
     planner: Annotated[EditPlanner, typer.Option(help="Who checks and provisions: the offline controller or Claude.")] = EditPlanner.offline,
     settle: Annotated[bool, typer.Option("--settle", help="Let AI2-THOR settle the placed objects and write their poses back (needs the simulator: the ai2thor extra).")] = False,
+    semantic: Annotated[bool, typer.Option("--semantic", help="SearchAssets ranks by meaning with an embedding model (the semantic extra; $MANSION_EMBEDDING_MODEL picks the model).")] = False,
 ) -> None:
     """Edit a building for a task: check each precondition, provision what is missing, confirm
     the oracle agent can do the task, and save the variant under BUILDING/variants/NAME/."""
@@ -51,7 +52,13 @@ def edit(
             from mansion.sim.thor import thor_controller
 
             controller = thor_controller()
-        result = edit_building(building, task, text=request, name=name, planner=planner.value, settle_with=controller)
+        embedder = None
+        if semantic:
+            from mansion.edit.asset_search import sentence_embedder
+
+            embedder = sentence_embedder()
+        result = edit_building(building, task, text=request, name=name, planner=planner.value, settle_with=controller,
+                               embedder=embedder)
     except MansionError as exc:
         raise _fail(str(exc)) from None
     except OSError as exc:

@@ -9,6 +9,7 @@ Controllers: offline, from a structured task (:class:`EditSpec`), and Claude's R
 it.
 """
 
+from mansion.edit.asset_search import Embedder, search_assets, sentence_embedder
 from mansion.edit.controller import EditResult, edit_building
 from mansion.edit.spec import Deliver, EditSpec, Fetch, StartRoom
 from mansion.edit.tools import TOOL_NAMES, TOOL_SPECS, SceneTools
@@ -27,6 +28,7 @@ __all__ = [
     "Deliver",
     "EditResult",
     "EditSpec",
+    "Embedder",
     "Fetch",
     "SceneTools",
     "StartRoom",
@@ -37,4 +39,6 @@ __all__ = [
     "list_variants",
     "load_variant",
     "revert_variant",
+    "search_assets",
+    "sentence_embedder",
 ]

@@ -63,12 +63,13 @@ def _oracle(scenes_dir: Path, task: TaskSpec) -> tuple[bool, int, float, str]:
 
 def edit_building(building_dir: str | Path, spec: EditSpec | None = None, *, text: str | None = None,
                   name: str | None = None, planner: str = "offline", client: Any = None,
-                  max_turns: int | None = None, settle_with: Any = None) -> EditResult:
+                  max_turns: int | None = None, settle_with: Any = None, embedder: Any = None) -> EditResult:
     """Edit the building for the task (``spec`` offline; ``text`` with ``planner="anthropic"``)
     and save the variant when the task has become executable. Never changes the base files.
-    ``settle_with``: an AI2-THOR controller in which the placed objects settle (optional)."""
+    ``settle_with``: an AI2-THOR controller in which the placed objects settle (optional);
+    ``embedder``: SearchAssets ranks by meaning with it (:func:`mansion.edit.sentence_embedder`)."""
     ws = Workspace(building_dir)
-    tools = SceneTools(ws)
+    tools = SceneTools(ws, embedder=embedder)
     log = EditLog()
     if planner == "offline":
         if spec is None:

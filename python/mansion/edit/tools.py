@@ -25,7 +25,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from mansion.edit.asset_search import search_assets
+from mansion.edit.asset_search import Embedder, search_assets
 from mansion.edit.surfaces import area_free, contents, fit, on_top
 from mansion.edit.workspace import Workspace
 from mansion.exceptions import (
@@ -71,8 +71,10 @@ def _xyz(obj: HouseObject) -> list[float]:
 class SceneTools:
     """The eight tools over one :class:`Workspace`; ``edits`` lists what they changed, in order."""
 
-    def __init__(self, workspace: Workspace):
+    def __init__(self, workspace: Workspace, embedder: Embedder | None = None):
         self.ws = workspace
+        #: SearchAssets ranks by meaning with this embedding model when given (off by default)
+        self.embedder = embedder
         self.edits: list[Edit] = []
 
     # -- CheckPath ------------------------------------------------------------------------------
@@ -103,7 +105,7 @@ class SceneTools:
 
     # -- SearchAssets ---------------------------------------------------------------------------
     def search_assets(self, query: str, top_k: int = 5, properties: list[str] | None = None) -> dict[str, Any]:
-        return {"assets": search_assets(query, top_k, properties)}
+        return {"assets": search_assets(query, top_k, properties, embedder=self.embedder)}
 
     # -- ListObjects ----------------------------------------------------------------------------
     def list_objects(self, room: str | None = None, keyword_or_id: str | None = None,
