@@ -18,7 +18,7 @@ from dataclasses import asdict
 from pathlib import Path
 from typing import Any
 
-from mansion.dataset.job import JobSettings, run_job
+from mansion.dataset.job import JobSettings, run_job, warm_up
 from mansion.dataset.mix import BuildingSpec
 from mansion.dataset.store import failure_path, write_json
 from mansion.exceptions import InvalidInputError
@@ -56,7 +56,7 @@ def run_local(
     # spawn, not fork: the parent may run threads (the progress bar's), which fork can deadlock
     context = multiprocessing.get_context("spawn")
     while queue:
-        pool = ProcessPoolExecutor(max_workers=workers, mp_context=context)
+        pool = ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=warm_up)
         running: dict[Future[dict[str, Any]], BuildingSpec] = {}
         broken = False
         try:
@@ -102,7 +102,13 @@ def run_ray(
         if address is not None:
             ray.init(address=address, log_to_driver=False)
         else:
-            ray.init(num_cpus=workers, include_dashboard=False, log_to_driver=False)
+            # the workers import the mansion this driver runs (a checkout on PYTHONPATH included)
+            source = str(Path(__file__).resolve().parents[2])
+            path = os.pathsep.join(p for p in (source, os.environ.get("PYTHONPATH", "")) if p)
+            ray.init(
+                num_cpus=workers, include_dashboard=False, log_to_driver=False,
+                runtime_env={"env_vars": {"PYTHONPATH": path}},
+            )
     try:
         task = ray.remote(num_cpus=1, max_retries=0)(run_job)
         window = 2 * max(1, int(ray.cluster_resources().get("CPU", workers)))
