@@ -195,7 +195,6 @@ def test_cli_dataset_end_to_end(tmp_path: Path) -> None:
     for line in (out / "index.jsonl").read_text().splitlines():
         folder = out / "buildings" / json.loads(line)["id"]
         assert (folder / "overview.png").read_bytes()[:4] == b"\x89PNG"
-        assert (folder / "scenes" / "floor_0.png").is_file()
         assert (folder / "scenes" / "manifest.json").is_file()
         record = json.loads((folder / "record.json").read_text())
         assert {"planning", "solving", "scenes", "writing", "validation", "pictures"} <= set(record["timings"])

@@ -1,7 +1,7 @@
 """One building of a dataset: the job every engine runs, a function of the building's spec alone.
 
 The job generates the building (plans), its AI2-THOR scenes (furnished), validates them as the
-simulator's loader would, optionally draws them, and moves the finished folder into
+simulator's loader would, optionally draws its plans (:mod:`mansion.dataset.pictures`), and moves the finished folder into
 ``DIR/buildings/<id>/`` with one ``os.rename``: it is built in ``DIR/buildings/.tmp-<id>-<pid>/``
 first, so a building folder either is complete or does not exist (a crash leaves only a ``.tmp-``
 folder, which the next run deletes). On a cluster ``DIR`` must be a path every worker sees.
@@ -27,6 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from mansion.dataset.mix import BuildingSpec
+from mansion.dataset.pictures import draw_plans
 from mansion.dataset.store import RECORD, failure_path, write_json
 from mansion.exceptions import InvalidBuildingError
 from mansion.planning.vocabulary import room_kind
@@ -123,14 +124,6 @@ def _without_timings(building: Any) -> tuple[Any, float]:
     return building.model_copy(update={"floors": floors}), round(spent, 4)
 
 
-def _draw(building: Any, folder: Path) -> None:
-    from mansion.building import plot_building
-    from mansion.scene.render import render_folder
-
-    plot_building(building, folder / "overview.png")
-    render_folder(folder / "scenes")
-
-
 def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock) -> dict[str, Any]:
     from mansion.building import generate_building
     from mansion.scene import build_scenes, validate_building
@@ -172,7 +165,7 @@ def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock
         warnings = len(problems)
         clock.lap("validation")
     if settings.pictures:
-        _draw(building, stage)
+        draw_plans(building, stage / "overview.png")
         clock.lap("pictures")
     objects = sum(len(h.objects) + sum(len(o.children) for o in h.objects) for h in scenes.houses)
     clock.timings["solver"] = solver_seconds  # inside "solving": the Rust solver's own time
