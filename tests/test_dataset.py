@@ -95,6 +95,7 @@ def test_same_bytes_whatever_the_worker_count(two_workers: Path, tmp_path: Path)
     assert any(k.endswith("building.json") for k in files)
     assert any(k.endswith("manifest.json") for k in files)
     assert _files(one) == files
+    assert (one / "statistics.png").read_bytes() == (two_workers / "statistics.png").read_bytes()
     for name in ("index.jsonl", "failures.jsonl"):
         assert _without_seconds(one / name) == _without_seconds(two_workers / name)
     summaries = [json.loads((d / "summary.json").read_text()) for d in (one, two_workers)]

@@ -14,13 +14,11 @@ import os
 from collections.abc import Iterable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
-from dataclasses import asdict
 from pathlib import Path
 from typing import Any
 
-from mansion.dataset.job import JobSettings, run_job, warm_up
+from mansion.dataset.job import JobSettings, record_failure, run_job, warm_up
 from mansion.dataset.mix import BuildingSpec
-from mansion.dataset.store import failure_path, write_json
 from mansion.exceptions import InvalidInputError
 
 __all__ = ["ENGINES", "run_local", "run_ray"]
@@ -28,14 +26,18 @@ __all__ = ["ENGINES", "run_local", "run_ray"]
 
 def _lost(root: Path, spec: BuildingSpec, exc: BaseException) -> dict[str, Any]:
     """The failure record of a building whose worker died under it."""
-    failure = {
-        **asdict(spec), "type": spec.building_type, "failed": True,
-        "error": type(exc).__name__, "message": f"the worker died: {exc}", "traceback": "",
-        "seconds": 0.0,
-    }
-    failure.pop("building_type")
-    write_json(failure_path(root, spec.id), failure)
-    return failure
+    return record_failure(root, spec, exc, message=f"the worker died: {exc}")
+
+
+def _stop(pool: ProcessPoolExecutor) -> None:
+    """Ctrl-C or an early stop with jobs in flight: end the workers now rather than wait for
+    their buildings (whose half-built folders the next run deletes)."""
+    terminate = getattr(pool, "terminate_workers", None)  # Python 3.14
+    if terminate is not None:
+        terminate()
+        return
+    for process in list(getattr(pool, "_processes", {}).values()):
+        process.terminate()
 
 
 def run_local(
@@ -79,9 +81,9 @@ def run_local(
                     yield _lost(root, spec, BrokenProcessPool("a worker process died"))
                 running.clear()
         finally:
-            # on Ctrl-C or an early stop: no waiting for the jobs in flight (their half-built
-            # folders are deleted by the next run)
-            pool.shutdown(wait=not running, cancel_futures=True)
+            if running:
+                _stop(pool)
+            pool.shutdown(wait=True, cancel_futures=True)
 
 
 def run_ray(

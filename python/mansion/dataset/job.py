@@ -32,7 +32,7 @@ from mansion.dataset.store import RECORD, failure_path, write_json
 from mansion.exceptions import InvalidBuildingError
 from mansion.planning.vocabulary import room_kind
 
-__all__ = ["JobSettings", "run_job", "warm_up"]
+__all__ = ["JobSettings", "record_failure", "run_job", "warm_up"]
 
 #: The stages a record's ``timings`` names, in the order they run.
 STAGES = ("planning", "solving", "checks", "scenes", "writing", "validation", "pictures")
@@ -193,12 +193,20 @@ def run_job(spec: BuildingSpec, settings: JobSettings, out: str | os.PathLike[st
         return record
     except Exception as exc:
         shutil.rmtree(stage, ignore_errors=True)
-        failure = {
-            **asdict(spec), "type": spec.building_type, "failed": True,
-            "error": type(exc).__name__, "message": str(exc),
-            "traceback": traceback.format_exc(limit=8),
-            "seconds": clock.total(),
-        }
-        failure.pop("building_type")
-        write_json(failure_path(root, spec.id), failure)
-        return failure
+        return record_failure(root, spec, exc, traceback.format_exc(limit=8), clock.total())
+
+
+def record_failure(
+    root: Path, spec: BuildingSpec, exc: BaseException, trace: str = "", seconds: float = 0.0,
+    message: str | None = None,
+) -> dict[str, Any]:
+    """Write ``root/failures/<id>.json`` for building ``spec`` (its seed, type and the
+    exception) and return it."""
+    failure = {
+        **{k: v for k, v in asdict(spec).items() if k != "building_type"},
+        "type": spec.building_type, "failed": True, "error": type(exc).__name__,
+        "message": str(exc) if message is None else message, "traceback": trace,
+        "seconds": seconds,
+    }
+    write_json(failure_path(root, spec.id), failure)
+    return failure
