@@ -66,9 +66,13 @@ def run(engine: str, n: int, workers: int, settings: DatasetSettings, sample: in
         wall = time.perf_counter() - start
         records = load_records(root / "ds")
         stages: dict[str, float] = defaultdict(float)
+        cpu_stages: dict[str, float] = defaultdict(float)
         for r in records:
             for k, v in r["timings"].items():
                 stages[k] += v
+            for k, v in r.get("cpu_timings", {}).items():
+                cpu_stages[k] += v
+        cpu_seconds = sum(r.get("cpu_seconds", 0.0) for r in records)
         worker_seconds = sum(r["seconds"] for r in records)
         floors = sum(r["floors"] for r in records)
         by_floors: dict[int, list[float]] = defaultdict(list)
@@ -89,6 +93,15 @@ def run(engine: str, n: int, workers: int, settings: DatasetSettings, sample: in
             "median_seconds_by_floors": {k: round(statistics.median(v), 2) for k, v in sorted(by_floors.items())},
             "stage_share_percent": {
                 k: round(100 * stages[k] / max(worker_seconds, 1e-9), 1) for k in (*STAGES, "solver") if k in stages
+            },
+            # CPU time is what a busy machine does not inflate: the time of 1,000 buildings on
+            # this machine's two cores with nothing else running, from the CPU the jobs used
+            "cpu_seconds_per_building": round(cpu_seconds / max(len(records), 1), 2),
+            "cpu_seconds_per_floor": round(cpu_seconds / max(floors, 1), 2),
+            "idle_minutes_for_1000_on_2_cores": round(1000 * cpu_seconds / max(len(records), 1) / 2 / 60, 1),
+            "cpu_stage_share_percent": {
+                k: round(100 * cpu_stages[k] / max(cpu_seconds, 1e-9), 1)
+                for k in (*STAGES, "solver") if k in cpu_stages
             },
             "peak_memory_mb_per_worker": max((r["peak_memory_mb"] for r in records), default=0.0),
         }
