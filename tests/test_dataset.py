@@ -218,3 +218,39 @@ def test_a_non_dataset_folder_is_refused(tmp_path: Path) -> None:
     with pytest.raises(InvalidInputError, match="not empty"):
         make_dataset(tmp_path, 1, SMALL)
     assert sorted(os.listdir(tmp_path)) == [".lock", "notes.txt"]
+
+
+def test_a_worker_killed_mid_building_fails_only_its_buildings(two_workers: Path, tmp_path: Path) -> None:
+    import multiprocessing
+    import signal
+    import threading
+    import time
+
+    out = tmp_path / "ds"
+    killed: list[int] = []
+
+    def kill_a_worker() -> None:
+        # as the OOM killer would: SIGKILL a worker once it is building something
+        deadline = time.monotonic() + 120
+        while time.monotonic() < deadline and not killed:
+            folder = out / "buildings"
+            if folder.is_dir() and any(p.name.startswith(".tmp-") for p in folder.iterdir()):
+                workers = multiprocessing.active_children()
+                if workers:
+                    os.kill(workers[0].pid, signal.SIGKILL)
+                    killed.append(workers[0].pid)
+            time.sleep(0.05)
+
+    killer = threading.Thread(target=kill_a_worker)
+    killer.start()
+    summary = make_dataset(out, N, SMALL, workers=2)
+    killer.join()
+    assert killed
+    failures = [json.loads(line) for line in (out / "failures.jsonl").read_text().splitlines()]
+    assert 1 <= len(failures) <= 2  # the buildings in flight when the pool broke
+    assert all("the worker died" in f["message"] for f in failures)
+    assert summary["buildings"] + summary["failures"] == N
+    # the rest went on in a new pool; a rerun makes the lost ones, the same as ever
+    again = make_dataset(out, N, SMALL, workers=2)
+    assert again["failures"] == 0
+    assert _files(out) == _files(two_workers)
