@@ -28,7 +28,7 @@ def dataset(
     max_floor_area: Annotated[float, typer.Option(help="Largest gross area of a floor, m2.")] = 500.0,
     seed: Annotated[int, typer.Option(help="Building i is generated from seed + i.")] = 0,
     workers: Annotated[int, typer.Option(help="Worker processes (local), or CPUs of a Ray started here.")] = 2,
-    engine: Annotated[EngineName, typer.Option(help="local: worker processes; ray: Ray tasks (pip install 'mansion[ray]').")] = EngineName.local,
+    engine: Annotated[EngineName, typer.Option(help="local: worker processes; ray: Ray tasks (pip install 'mansion\\[ray]').")] = EngineName.local,
     address: Annotated[Optional[str], typer.Option(help="Ray cluster address (e.g. auto or ray://host:10001); default: start Ray here.")] = None,
     pictures: Annotated[bool, typer.Option("--pictures/--no-pictures", help="Draw each building's floor plans (DIR/buildings/<id>/overview.png; `mansion render` draws the scenes).")] = False,
     validate: Annotated[bool, typer.Option("--validate/--no-validate", help="Validate every building's scenes as AI2-THOR's loader would; errors fail the building.")] = True,
