@@ -1,5 +1,6 @@
 """The ``mansion`` command line (typer); ``app`` is the console-script entry point."""
 
+from mansion.cli.dataset import dataset
 from mansion.cli.edit import edit, variants_app
 from mansion.cli.evaluate import eval_app, tune_weights
 from mansion.cli.export import export
@@ -12,5 +13,6 @@ app.add_typer(tasks_app, name="tasks")
 app.command("export")(export)
 app.command("edit")(edit)
 app.add_typer(variants_app, name="variants")
+app.command("dataset")(dataset)
 
 __all__ = ["app"]

@@ -602,7 +602,19 @@ def sample_outlines(
     if shape == "courtyard" and area < 350:
         shape = "rectangle"
     stack = rng.choice(typ.stacks) if floors > 1 else "uniform"
-    return stack_outlines(shape, stack, floors, area, rng, min_arm=min_arm)
+    state = rng.getstate()
+    outlines = stack_outlines(shape, stack, floors, area, rng, min_arm=min_arm)
+    # Outlines are whole metres, so one sized to the cap can overshoot it by a few m²: sample
+    # the same shape (same draws) a little smaller until every floor is within the cap.
+    target = area
+    for _ in range(8):
+        largest = max(Polygon(*o).area for o in outlines)
+        if largest <= options.max_floor_area + 1e-9:
+            break
+        target *= options.max_floor_area / largest * 0.99
+        rng.setstate(state)
+        outlines = stack_outlines(shape, stack, floors, target, rng, min_arm=min_arm)
+    return outlines
 
 
 def min_arm(typ: Typology, building_type: str) -> float:
