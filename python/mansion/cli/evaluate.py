@@ -25,6 +25,7 @@ class ModeChoice(str, Enum):
 class SeedChoice(str, Enum):
     ground_truth = "ground-truth"
     anthropic = "anthropic"
+    text = "text"
 
 
 def _progress(console: Console) -> Progress:
@@ -61,8 +62,8 @@ def eval_floorplan(
     planner: Annotated[
         SeedChoice,
         typer.Option(
-            help="Seeds: the ground-truth centroids (MA protocol), or Claude reading "
-            "DIR/text/<id>.txt (needs ANTHROPIC_API_KEY)."
+            help="Seeds: the ground-truth centroids (MA protocol), Claude reading "
+            "DIR/text/<id>.txt (needs ANTHROPIC_API_KEY), or the same text read offline (text)."
         ),
     ] = SeedChoice.ground_truth,
 ) -> None:
@@ -83,7 +84,7 @@ def eval_floorplan(
                 rng_seed=seed,
                 workers=workers,
                 progress=lambda done, total: bar.update(task, completed=done, total=total),
-                seeds="anthropic" if planner is SeedChoice.anthropic else "ground_truth",
+                seeds={"ground-truth": "ground_truth"}.get(planner.value, planner.value),  # type: ignore[arg-type]
             )
         if json_out is not None:
             report.save(json_out)

@@ -32,9 +32,9 @@ if TYPE_CHECKING:
 __all__ = ["EvalReport", "PlanResult", "evaluate_floorplans", "solve_plan", "write_gallery"]
 
 Mode = Literal["hierarchical", "flat"]
-#: Where the seeds come from: the protocol's ground-truth centroids (MA), or Claude reading the
-#: plan's description (the paper's end-to-end setting).
-SeedSource = Literal["ground_truth", "anthropic"]
+#: Where the seeds come from: the protocol's ground-truth centroids (MA), or the plan's description
+#: (the paper's end-to-end setting) read by Claude or, offline, by :mod:`mansion.planning.spatial_language`.
+SeedSource = Literal["ground_truth", "anthropic", "text"]
 
 
 class PlanResult(BaseModel):
@@ -166,7 +166,8 @@ def evaluate_floorplans(
     not depend on it. ``progress(done, total)`` is called after each plan.
     ``seeds="anthropic"`` has Claude place the seeds from ``DIR/text/<id>.txt`` first (one request
     per plan, through ``client``, default an :class:`LLMClient` from the environment); a plan whose
-    seeds cannot be planned counts as a failure.
+    seeds cannot be planned counts as a failure. ``seeds="text"`` reads the same files offline
+    (:func:`mansion.eval.text_placement.plan_text_seeds_offline`).
     """
     if mode not in ("hierarchical", "flat"):
         raise InvalidInputError(f"mode must be 'hierarchical' or 'flat', got {mode!r}")
@@ -183,8 +184,10 @@ def evaluate_floorplans(
     planned: dict[str, dict[str, tuple[float, float]] | str | None] = dict.fromkeys(chosen)
     if seeds == "anthropic":
         planned.update(_text_seeds(Path(data), folder, chosen, client))
+    elif seeds == "text":
+        planned.update(_offline_text_seeds(Path(data), folder, chosen))
     elif seeds != "ground_truth":
-        raise InvalidInputError(f"seeds must be 'ground_truth' or 'anthropic', got {seeds!r}")
+        raise InvalidInputError(f"seeds must be 'ground_truth', 'anthropic' or 'text', got {seeds!r}")
     jobs: list[Job] = [
         (pid, str(folder / f"{pid}.json"), mode, w, s, rng_seed, planned[pid]) for pid in chosen
     ]
@@ -244,6 +247,24 @@ def _text_seeds(
             out[pid] = plan_text_seeds(llm, T2DPlan.load(folder / f"{pid}.json"), description)
         except PlannerError as exc:
             out[pid] = f"seed planning failed: {exc}"
+    return out
+
+
+def _read_text(data: Path, pid: str) -> str:
+    text_path = data / "text" / f"{pid}.txt"
+    try:
+        return text_path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InvalidInputError(f"no description for plan {pid}: {text_path} ({exc.strerror})") from exc
+
+
+def _offline_text_seeds(data: Path, folder: Path, ids: list[str]) -> dict[str, dict[str, tuple[float, float]] | str]:
+    """Seeds read from each plan's description with no model (never a failure for want of words)."""
+    from mansion.eval.text_placement import plan_text_seeds_offline
+
+    out: dict[str, dict[str, tuple[float, float]] | str] = {}
+    for pid in ids:
+        out[pid] = plan_text_seeds_offline(T2DPlan.load(folder / f"{pid}.json"), _read_text(data, pid))[0]
     return out
 
 
