@@ -109,7 +109,13 @@ def solve_plan(
     return solver_to_mask(layout.grid, inputs.classes), layout
 
 
-Job = tuple[str, str, Mode, EnergyWeights, SolverSettings, int, "dict[str, tuple[float, float]] | str | None"]
+class FromText(BaseModel):
+    """A job's seeds are to be read from this description in the worker (``seeds="text"``)."""
+
+    description: str
+
+
+Job = tuple[str, str, Mode, EnergyWeights, SolverSettings, int, "dict[str, tuple[float, float]] | str | FromText | None"]
 
 
 def _score_one(job: Job) -> tuple[PlanResult, Any]:
@@ -119,9 +125,17 @@ def _score_one(job: Job) -> tuple[PlanResult, Any]:
     try:
         if isinstance(seeds, str):  # the seed planner failed on this plan: a failure, scored 0
             raise MansionError(seeds)
-        pred, layout = solve_plan(
-            plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=seeds
-        )
+        if isinstance(seeds, FromText):
+            from mansion.eval.text_placement import solve_from_text
+
+            seeds, pred, layout = solve_from_text(
+                plan, seeds.description,
+                lambda s: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=s),
+            )
+        else:
+            pred, layout = solve_plan(
+                plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=seeds
+            )
     except MansionError as exc:
         return (
             PlanResult(
@@ -167,7 +181,7 @@ def evaluate_floorplans(
     ``seeds="anthropic"`` has Claude place the seeds from ``DIR/text/<id>.txt`` first (one request
     per plan, through ``client``, default an :class:`LLMClient` from the environment); a plan whose
     seeds cannot be planned counts as a failure. ``seeds="text"`` reads the same files offline
-    (:func:`mansion.eval.text_placement.plan_text_seeds_offline`).
+    (:func:`mansion.eval.text_placement.solve_from_text`, in the workers).
     """
     if mode not in ("hierarchical", "flat"):
         raise InvalidInputError(f"mode must be 'hierarchical' or 'flat', got {mode!r}")
@@ -181,11 +195,11 @@ def evaluate_floorplans(
     if not chosen:
         raise InvalidInputError(f"no plans to evaluate in {str(data)!r}")
     folder = plans_folder(data)
-    planned: dict[str, dict[str, tuple[float, float]] | str | None] = dict.fromkeys(chosen)
+    planned: dict[str, dict[str, tuple[float, float]] | str | FromText | None] = dict.fromkeys(chosen)
     if seeds == "anthropic":
         planned.update(_text_seeds(Path(data), folder, chosen, client))
     elif seeds == "text":
-        planned.update(_offline_text_seeds(Path(data), folder, chosen))
+        planned.update({pid: FromText(description=_read_text(Path(data), pid)) for pid in chosen})
     elif seeds != "ground_truth":
         raise InvalidInputError(f"seeds must be 'ground_truth', 'anthropic' or 'text', got {seeds!r}")
     jobs: list[Job] = [
@@ -256,16 +270,6 @@ def _read_text(data: Path, pid: str) -> str:
         return text_path.read_text(encoding="utf-8")
     except OSError as exc:
         raise InvalidInputError(f"no description for plan {pid}: {text_path} ({exc.strerror})") from exc
-
-
-def _offline_text_seeds(data: Path, folder: Path, ids: list[str]) -> dict[str, dict[str, tuple[float, float]] | str]:
-    """Seeds read from each plan's description with no model (never a failure for want of words)."""
-    from mansion.eval.text_placement import plan_text_seeds_offline
-
-    out: dict[str, dict[str, tuple[float, float]] | str] = {}
-    for pid in ids:
-        out[pid] = plan_text_seeds_offline(T2DPlan.load(folder / f"{pid}.json"), _read_text(data, pid))[0]
-    return out
 
 
 def write_gallery(

@@ -5,26 +5,55 @@ From the protocol (:func:`mansion.eval.t2d.protocol_inputs`) come the free regio
 type and target area, and the adjacency pairs, exactly as with ``--planner anthropic``; from the
 text come the positions, relations, stated sizes and exterior walls. The ground-truth centroids
 are never read.
+
+A few seed sets are tried (the seed solve under a handful of weightings); each is solved and the
+layout that agrees best with the text (:func:`mansion.planning.spatial_seeds.layout_disagreement`:
+rooms reaching the walls they are said to be at, relations in the right order, areas and
+adjacency met) is kept. A seed set the solver cannot lay out is skipped; only when none can is
+the plan a failure.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from typing import Any
 
 from mansion.eval.t2d import CELL_SIZE, GRID, T2DPlan, protocol_inputs
-from mansion.planning.spatial_language import KnownRoom, read_description
-from mansion.planning.spatial_seeds import FreeGrid, SeedReport, SeedRoom, SeedWeights, match_rooms, place_seeds
+from mansion.exceptions import MansionError
+from mansion.planning.spatial_language import KnownRoom, Reading, read_description
+from mansion.planning.spatial_seeds import (
+    FreeGrid, SeedReport, SeedRoom, SeedWeights, layout_disagreement, match_rooms, place_seeds,
+)
 
-if TYPE_CHECKING:
-    pass
+__all__ = ["TextProblem", "plan_text_seeds_offline", "solve_from_text", "text_problem"]
 
-__all__ = ["plan_text_seeds_offline"]
+#: The weightings tried, beside the defaults: relations tighter or looser, the hub's box smaller
+#: or larger, compass words stronger, adjacency stronger.
+VARIANTS: tuple[dict[str, Any], ...] = (
+    {},
+    {"overlap": 0.0, "fit": 0.0, "hub_leftover": False, "adjacency": 0.0},
+    {"hub_leftover": False},
+    {"gap": 1.0},
+    {"hub_shrink": 0.8, "overlap": 1.0},
+    {"position": 8.0, "relation": 2.0},
+    {"adjacency": 3.0, "next_to": 2.0},
+    {"fit": 0.5, "inset": 0.7},
+)
 
 
-def plan_text_seeds_offline(
-    plan: T2DPlan, description: str, *, weights: SeedWeights | None = None
-) -> tuple[dict[str, tuple[float, float]], SeedReport]:
-    """Seeds of every room of ``plan`` (node id → solver-frame point) from ``description``."""
+@dataclass(frozen=True)
+class TextProblem:
+    """What the seed solve works from for one plan."""
+
+    reading: Reading
+    rooms: list[SeedRoom]
+    free: FreeGrid
+    adjacency: list[tuple[str, str]]
+
+
+def text_problem(plan: T2DPlan, description: str) -> TextProblem:
+    """The protocol's rooms, areas, adjacency and free region, and the reading of ``description``."""
     import numpy as np
 
     inputs = protocol_inputs(plan)
@@ -36,4 +65,42 @@ def plan_text_seeds_offline(
     # the free mask with rows going up: mask row r (top) is solver row GRID - 1 - r
     free = FreeGrid(np.ascontiguousarray((plan.label_array() != 0)[::-1]), (0.0, 0.0), CELL_SIZE)
     assert free.mask.shape == (GRID, GRID)
-    return place_seeds(reading, rooms, free, adjacency, weights=weights)
+    return TextProblem(reading, rooms, free, adjacency)
+
+
+def plan_text_seeds_offline(
+    plan: T2DPlan, description: str, *, weights: SeedWeights | None = None
+) -> tuple[dict[str, tuple[float, float]], SeedReport]:
+    """Seeds of every room of ``plan`` (node id → solver-frame point) from ``description``."""
+    p = text_problem(plan, description)
+    return place_seeds(p.reading, p.rooms, p.free, p.adjacency, weights=weights)
+
+
+def solve_from_text(
+    plan: T2DPlan, description: str, solve: Callable[[dict[str, tuple[float, float]]], tuple[Any, Any]]
+) -> tuple[dict[str, tuple[float, float]], Any, Any]:
+    """Try the seed sets of :data:`VARIANTS` with ``solve(seeds) -> (prediction, layout)`` and keep
+    the layout that agrees best with the text. Raises the last :class:`MansionError` when no seed
+    set can be laid out."""
+    p = text_problem(plan, description)
+    base = SeedWeights()
+    best: tuple[float, int, dict[str, tuple[float, float]], Any, Any] | None = None
+    error: MansionError | None = None
+    tried: list[dict[str, tuple[float, float]]] = []
+    for k, variant in enumerate(VARIANTS):
+        seeds, _ = place_seeds(p.reading, p.rooms, p.free, p.adjacency, weights=replace(base, **variant))
+        if seeds in tried:
+            continue
+        tried.append(seeds)
+        try:
+            pred, layout = solve(seeds)
+        except MansionError as exc:
+            error = exc
+            continue
+        score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
+        if best is None or score < best[0]:
+            best = (score, k, seeds, pred, layout)
+    if best is None:
+        assert error is not None
+        raise error
+    return best[2], best[3], best[4]

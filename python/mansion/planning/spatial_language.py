@@ -337,6 +337,12 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
                 subject = int(first.group(1))
             elif first and not lead.strip() and subject is None:
                 subject = int(first.group(1))
+            else:
+                # "Measuring about 10x10 ft, the common room is located ...": a room named with
+                # a placing verb after a leading phrase is the subject too
+                later = re.search(r"(?:^|,\s*|\bthe\s+)R(\d+)\s+(?:is|are)\s+(?:located|situated|positioned|placed|found|in|on|at)\b", piece)
+                if later:
+                    subject = int(later.group(1))
             clauses.append(_Clause(piece, piece, subject))
 
     statements: list[Statement] = []

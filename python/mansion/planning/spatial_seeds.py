@@ -27,7 +27,7 @@ import itertools
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from mansion.exceptions import InvalidInputError
 from mansion.planning.spatial_language import DIRECTIONS, Reading, Statement
@@ -36,7 +36,9 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
-__all__ = ["FreeGrid", "SeedReport", "SeedRoom", "SeedWeights", "match_rooms", "place_seeds"]
+__all__ = [
+    "FreeGrid", "SeedReport", "SeedRoom", "SeedWeights", "layout_disagreement", "match_rooms", "place_seeds",
+]
 
 
 @dataclass(frozen=True)
@@ -89,6 +91,13 @@ class SeedWeights:
     gap: float = 0.6
     sweeps: int = 8
     hub_shrink: float = 0.5
+    #: a position's target is this many half-sizes in from the named wall, at most max_inset of
+    #: the extent
+    inset: float = 1.0
+    max_inset: float = 1 / 3
+    side_middle: float = 0.5
+    #: seed the hub (largest room) in what the others leave rather than by its own words
+    hub_leftover: bool = True
 
 
 @dataclass
@@ -190,13 +199,15 @@ def place_seeds(
             if s.direction == "centre":
                 unary[k] += w.centre * ((X - cx) ** 2 + (Y - cy) ** 2) / scale**2
                 continue
-            # an inset target: the named wall(s), moved in by the room's half size
-            tx = x1 - min(hx, (x1 - x0) / 2) if dx > 0 else x0 + min(hx, (x1 - x0) / 2)
-            ty = y1 - min(hy, (y1 - y0) / 2) if dy > 0 else y0 + min(hy, (y1 - y0) / 2)
-            if dx:
-                unary[k] += weight * ((X - tx) / scale) ** 2
-            if dy:
-                unary[k] += weight * ((Y - ty) / scale) ** 2
+            # the target: the named wall(s), moved in by the room's half size (at most a third
+            # of the extent: a big room "in the north" still has its centre in the north third)
+            inset_x = min(hx * w.inset, (x1 - x0) * w.max_inset)
+            inset_y = min(hy * w.inset, (y1 - y0) * w.max_inset)
+            tx = x1 - inset_x if dx > 0 else x0 + inset_x if dx < 0 else (x0 + x1) / 2
+            ty = y1 - inset_y if dy > 0 else y0 + inset_y if dy < 0 else (y0 + y1) / 2
+            # a side says nothing of the other axis: a weak pull to the middle of that side
+            unary[k] += (weight if dx else w.side_middle) * ((X - tx) / scale) ** 2
+            unary[k] += (weight if dy else w.side_middle) * ((Y - ty) / scale) ** 2
         if not about[room.id]:
             report.defaults.append(room.id)
 
@@ -287,6 +298,21 @@ def place_seeds(
                 moved = True
         if not moved:
             break
+
+    if w.hub_leftover:
+        # The hub takes what the other rooms leave: its seed is the free cell nearest the centre
+        # of the cells outside every other room's box (the hub's own words shift it the same way
+        # as any room's, through the unary cost, as a tie-break).
+        covered = np.zeros(X.size, dtype=bool)
+        for j in range(n):
+            if j == hub:
+                continue
+            hx, hy = _half_sizes(rooms[j], about[rooms[j].id], free.cell)
+            covered |= (np.abs(X - X[pos[j]]) < hx) & (np.abs(Y - Y[pos[j]]) < hy)
+        if (~covered).any():
+            lx, ly = X[~covered].mean(), Y[~covered].mean()
+            d2 = ((X - lx) ** 2 + (Y - ly) ** 2) / scale**2 + np.where(covered, 1.0, 0.0)
+            pos[hub] = int(np.argmin(d2 + 0.1 * unary[hub]))
 
     seeds = {
         rid: (free.origin[0] + float(X[pos[k]]) * free.cell, free.origin[1] + float(Y[pos[k]]) * free.cell)
@@ -412,3 +438,76 @@ def match_rooms(
         moved = {perm[o]: statements.pop(o) for o in named if o in statements}
         statements.update(moved)
     return Reading(statements=statements, unread=list(reading.unread), unresolved=list(reading.unresolved), resolved=resolved)
+
+
+def layout_disagreement(
+    reading: Reading,
+    rooms: Sequence[SeedRoom],
+    free: FreeGrid,
+    adjacency: Iterable[tuple[str, str]],
+    grid: Any,
+) -> float:
+    """How far a solved floor (a :class:`mansion.models.LabelGrid`) is from what the text says:
+    each room said to be at a side or corner should reach that edge of the free region, a room
+    said to be north of another should have its centroid north of it, each room should have its
+    target area and touch its adjacent rooms. Lower is better; 0 is full agreement."""
+    import numpy as np
+
+    labels = grid.array()
+    cell = grid.cell_size
+    ids = list(grid.ids)
+    mask = np.asarray(free.mask, dtype=bool)
+    rr, cc = np.nonzero(mask)
+    fx0 = free.origin[0] + cc.min() * free.cell
+    fx1 = free.origin[0] + (cc.max() + 1) * free.cell
+    fy0 = free.origin[1] + rr.min() * free.cell
+    fy1 = free.origin[1] + (rr.max() + 1) * free.cell
+    scale = max(fx1 - fx0, fy1 - fy0)
+    boxes: dict[str, tuple[float, float, float, float, float, float, float]] = {}
+    for k, rid in enumerate(ids):
+        r, c = np.nonzero(labels == k)
+        if r.size == 0:
+            continue
+        xs = grid.origin[0] + (c + 0.5) * cell
+        ys = grid.origin[1] + (r + 0.5) * cell
+        boxes[rid] = (
+            float(xs.mean()), float(ys.mean()), float(xs.min() - cell / 2), float(xs.max() + cell / 2),
+            float(ys.min() - cell / 2), float(ys.max() + cell / 2), float(r.size * cell * cell),
+        )
+    total = 0.0
+    for room in rooms:
+        if room.id not in boxes:
+            total += 5.0
+            continue
+        cx, cy, bx0, bx1, by0, by1, area = boxes[room.id]
+        total += abs(area - room.area) / max(room.area, 1e-9)
+        for s in reading.about(room.id):
+            if s.kind in ("position", "exterior") and s.direction:
+                dx, dy = DIRECTIONS[s.direction]
+                weight = 0.5 if s.kind == "exterior" else 1.0
+                if s.direction == "centre":
+                    total += 0.5 * math.hypot(cx - (fx0 + fx1) / 2, cy - (fy0 + fy1) / 2) / scale
+                    continue
+                if dx:
+                    total += weight * ((fx1 - bx1) if dx > 0 else (bx0 - fx0)) / scale
+                if dy:
+                    total += weight * ((fy1 - by1) if dy > 0 else (by0 - fy0)) / scale
+            elif s.kind == "relation" and s.relation and s.relation.endswith("_of"):
+                d = DIRECTIONS.get(s.relation[:-3])
+                if d is None:
+                    continue
+                for o in s.others:
+                    other = reading.resolved.get(o.key)
+                    if other not in boxes:
+                        continue
+                    ox, oy = boxes[other][:2]
+                    total += max(0.0, -((cx - ox) * d[0] + (cy - oy) * d[1])) / scale
+    # adjacency: rooms that should share a wall and do not
+    for a, b in adjacency:
+        if a in ids and b in ids:
+            ka, kb = ids.index(a), ids.index(b)
+            A = labels == ka
+            B = labels == kb
+            touch = (A[:, :-1] & B[:, 1:]).any() or (B[:, :-1] & A[:, 1:]).any() or (A[:-1] & B[1:]).any() or (B[:-1] & A[1:]).any()
+            total += 0.0 if touch else 0.5
+    return total
