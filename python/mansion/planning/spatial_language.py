@@ -265,7 +265,7 @@ def _type_of(lex: _Lexicon, word: str) -> str:
 # -- clauses and subjects -----------------------------------------------------------------------
 
 _SUBJECT_LEAD = re.compile(
-    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|finally|lastly|next|,|:|-)\s+)*$"
+    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-)\s*)*$"
 )
 _PRONOUN = re.compile(r"^\s*(?:it|its|it's|this|the\s+room|this\s+room|the\s+size|size|which|they|their)\b")
 _PLACE = (
@@ -380,6 +380,9 @@ def _run_on_split(sentence: str) -> list[str]:
     cuts = [c for c in cuts]
     cuts = [m.start(2) for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
             if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))]
+    # a request's list of rooms: "a clinic with a pharmacy on the east side, and a cafe in ..."
+    cuts += [m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?D:)", sentence)]
+    cuts = sorted(set(c for c in cuts if c > 0))
     if not cuts:
         return [sentence]
     pieces, start = [], 0
