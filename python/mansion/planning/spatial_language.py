@@ -200,6 +200,34 @@ def _directions(text: str) -> str:
     return text
 
 
+#: Room words that misspellings are folded to ("kichen", "commanroom", "livingoom", "balocany").
+_SPELLING = {
+    "bathroom": "bathroom", "bedroom": "bedroom", "kitchen": "kitchen", "balcony": "balcony",
+    "livingroom": "living room", "masterroom": "master room", "commonroom": "common room",
+    "living": "living", "master": "master", "common": "common", "dining": "dining",
+    "washroom": "washroom", "storage": "storage", "adjacent": "adjacent", "corner": "corner",
+}
+#: Real words close to a room word that must stay as they are.
+_NOT_TYPOS = frozenset({"enter", "centered", "matter", "mister", "later", "comma", "commons", "comment", "storing", "storey", "corners", "corned", "leaving", "giving", "diving", "lining", "mining", "kitten"})
+
+
+def _fold_spelling(text: str) -> str:
+    """Fold misspelt room words to their spelling (rapidfuzz ratio ≥ 85, words of five letters
+    or more that are not themselves room words or common look-alikes)."""
+    from rapidfuzz import fuzz, process
+
+    choices = list(_SPELLING)
+
+    def fold(m: re.Match[str]) -> str:
+        word = m.group(0)
+        if len(word) < 5 or word in _SPELLING or word in _NOT_TYPOS or word.endswith("s"):
+            return word
+        best = process.extractOne(word, choices, scorer=fuzz.ratio, score_cutoff=85)
+        return _SPELLING[best[0]] if best else word
+
+    return re.sub(r"[a-z]+", fold, text)
+
+
 def _numbers(text: str) -> str:
     words = "|".join(sorted(_NUMBER_WORDS, key=len, reverse=True))
     text = re.sub(rf"\b({words})\b", lambda m: str(_NUMBER_WORDS[m.group(1)]), text)
@@ -265,7 +293,7 @@ def _type_of(lex: _Lexicon, word: str) -> str:
 # -- clauses and subjects -----------------------------------------------------------------------
 
 _SUBJECT_LEAD = re.compile(
-    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-)\s*)*$"
+    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
 )
 _PRONOUN = re.compile(r"^\s*(?:it|its|it's|this|the\s+room|this\s+room|the\s+size|size|which|they|their)\b")
 _PLACE = (
@@ -301,7 +329,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
     Never raises for language it does not understand: such clauses land in ``Reading.unread``.
     """
     lex = _lexicon([r.room_type for r in rooms])
-    norm = text.lower()
+    norm = _fold_spelling(text.lower())
     for pat, rep in _FOLDS:
         norm = re.sub(pat, rep, norm)
     norm = _numbers(norm)
@@ -330,6 +358,13 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
     for sentence in _split_sentences(tokens):
         for piece in _run_on_split(sentence):
             first = re.search(r"R(\d+)\b", piece)
+            # "Occupying most of the west side, the living room ...": the subject follows a
+            # leading participle phrase, which is about it
+            dangling = re.match(r"\s*(?:[a-z]+ing|located|situated|placed|positioned|set|tucked)\b[^,]*,\s*(?:the\s+|a\s+|an\s+)?R(\d+)\b", piece)
+            if dangling:
+                subject = int(dangling.group(1))
+                clauses.append(_Clause(piece, piece, subject))
+                continue
             lead = piece[: first.start()] if first else ""
             if first and _SUBJECT_LEAD.match(lead.strip() + " " if lead.strip() else "") and (
                 _opens_description(piece[first.end():]) or subject is None
@@ -340,9 +375,12 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
             else:
                 # "Measuring about 10x10 ft, the common room is located ...": a room named with
                 # a placing verb after a leading phrase is the subject too
-                later = re.search(r"(?:^|,\s*|\bthe\s+)R(\d+)\s+(?:is|are)\s+(?:located|situated|positioned|placed|found|in|on|at)\b", piece)
+                later = re.search(
+                    r"(?:^|,\s*|\bthe\s+)R(\d+)\s+(?:is|are)\s+(?:located|situated|positioned|placed|found|in|on|at)\b"
+                    r"|\blocation\s+of\s+(?:the\s+)?R(\d+)", piece
+                )
                 if later:
-                    subject = int(later.group(1))
+                    subject = int(later.group(1) or later.group(2))
             clauses.append(_Clause(piece, piece, subject))
 
     statements: list[Statement] = []
@@ -379,7 +417,9 @@ def _run_on_split(sentence: str) -> list[str]:
     ]
     cuts = [c for c in cuts]
     cuts = [m.start(2) for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
-            if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))]
+            if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
+        # "the 11x5 bathroom is ...": a size in front of the room is not the end of a description
+        and not re.search(r"\b(?:the|a|an)\s+[\d.x*'\"]+\s*$", sentence[: m.start(2)])]
     # a request's list of rooms: "a clinic with a pharmacy on the east side, and a cafe in ..."
     cuts += [m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?D:)", sentence)]
     cuts = sorted(set(c for c in cuts if c > 0))

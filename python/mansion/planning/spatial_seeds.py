@@ -37,7 +37,8 @@ if TYPE_CHECKING:
     import numpy.typing as npt
 
 __all__ = [
-    "FreeGrid", "SeedReport", "SeedRoom", "SeedWeights", "layout_disagreement", "match_rooms", "place_seeds",
+    "DISAGREEMENT_WEIGHTS", "FreeGrid", "SeedReport", "SeedRoom", "SeedWeights", "disagreement_parts",
+    "layout_disagreement", "match_rooms", "place_seeds",
 ]
 
 
@@ -440,17 +441,36 @@ def match_rooms(
     return Reading(statements=statements, unread=list(reading.unread), unresolved=list(reading.unresolved), resolved=resolved)
 
 
+#: Weights of :func:`layout_disagreement`'s parts.
+DISAGREEMENT_WEIGHTS: dict[str, float] = {
+    "missing": 5.0, "area": 1.0, "position": 1.0, "exterior": 0.5, "centre": 0.5, "relation": 1.0, "adjacency": 0.5,
+}
+
+
 def layout_disagreement(
     reading: Reading,
     rooms: Sequence[SeedRoom],
     free: FreeGrid,
     adjacency: Iterable[tuple[str, str]],
     grid: Any,
+    weights: dict[str, float] | None = None,
 ) -> float:
     """How far a solved floor (a :class:`mansion.models.LabelGrid`) is from what the text says:
     each room said to be at a side or corner should reach that edge of the free region, a room
     said to be north of another should have its centroid north of it, each room should have its
     target area and touch its adjacent rooms. Lower is better; 0 is full agreement."""
+    w = weights or DISAGREEMENT_WEIGHTS
+    return sum(w.get(k, 0.0) * v for k, v in disagreement_parts(reading, rooms, free, adjacency, grid).items())
+
+
+def disagreement_parts(
+    reading: Reading,
+    rooms: Sequence[SeedRoom],
+    free: FreeGrid,
+    adjacency: Iterable[tuple[str, str]],
+    grid: Any,
+) -> dict[str, float]:
+    """The parts of :func:`layout_disagreement`, unweighted."""
     import numpy as np
 
     labels = grid.array()
@@ -474,24 +494,23 @@ def layout_disagreement(
             float(xs.mean()), float(ys.mean()), float(xs.min() - cell / 2), float(xs.max() + cell / 2),
             float(ys.min() - cell / 2), float(ys.max() + cell / 2), float(r.size * cell * cell),
         )
-    total = 0.0
+    parts = dict.fromkeys(("missing", "area", "position", "exterior", "centre", "relation", "adjacency"), 0.0)
     for room in rooms:
         if room.id not in boxes:
-            total += 5.0
+            parts["missing"] += 1.0
             continue
         cx, cy, bx0, bx1, by0, by1, area = boxes[room.id]
-        total += abs(area - room.area) / max(room.area, 1e-9)
+        parts["area"] += abs(area - room.area) / max(room.area, 1e-9)
         for s in reading.about(room.id):
             if s.kind in ("position", "exterior") and s.direction:
                 dx, dy = DIRECTIONS[s.direction]
-                weight = 0.5 if s.kind == "exterior" else 1.0
                 if s.direction == "centre":
-                    total += 0.5 * math.hypot(cx - (fx0 + fx1) / 2, cy - (fy0 + fy1) / 2) / scale
+                    parts["centre"] += math.hypot(cx - (fx0 + fx1) / 2, cy - (fy0 + fy1) / 2) / scale
                     continue
                 if dx:
-                    total += weight * ((fx1 - bx1) if dx > 0 else (bx0 - fx0)) / scale
+                    parts[s.kind] += ((fx1 - bx1) if dx > 0 else (bx0 - fx0)) / scale
                 if dy:
-                    total += weight * ((fy1 - by1) if dy > 0 else (by0 - fy0)) / scale
+                    parts[s.kind] += ((fy1 - by1) if dy > 0 else (by0 - fy0)) / scale
             elif s.kind == "relation" and s.relation and s.relation.endswith("_of"):
                 d = DIRECTIONS.get(s.relation[:-3])
                 if d is None:
@@ -501,7 +520,7 @@ def layout_disagreement(
                     if other not in boxes:
                         continue
                     ox, oy = boxes[other][:2]
-                    total += max(0.0, -((cx - ox) * d[0] + (cy - oy) * d[1])) / scale
+                    parts["relation"] += max(0.0, -((cx - ox) * d[0] + (cy - oy) * d[1])) / scale
     # adjacency: rooms that should share a wall and do not
     for a, b in adjacency:
         if a in ids and b in ids:
@@ -509,5 +528,5 @@ def layout_disagreement(
             A = labels == ka
             B = labels == kb
             touch = (A[:, :-1] & B[:, 1:]).any() or (B[:, :-1] & A[:, 1:]).any() or (A[:-1] & B[1:]).any() or (B[:-1] & A[1:]).any()
-            total += 0.0 if touch else 0.5
-    return total
+            parts["adjacency"] += 0.0 if touch else 1.0
+    return parts
