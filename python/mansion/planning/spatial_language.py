@@ -437,7 +437,7 @@ def _opens_description(rest: str) -> bool:
     # A room opening a sentence is its subject ("R2 is ...", "R2 resides ...", "R2 D:south
     # direction"), unless it starts a list or a relation to the previous subject ("R2 and R3 are
     # to the west", "R2 to the north").
-    return not re.match(r"\s*(?:and|&|,|or|as\s+well|to\s+the|to\s+its|on\s+its|is\s+to\s+(?:the|its)\s+D:|are\b)", rest)
+    return not re.match(r"\s*(?:and|&|,|or|as\s+well|to\s+the|to\s+its|on\s+its|is\s+to\s+(?:the|its)\s+D:\w+\b(?!\s+(?:side\s+|part\s+)?(?:of|from)\b)|are\b)", rest)
 
 
 def _is_filler(text: str) -> bool:
