@@ -421,7 +421,7 @@ def _run_on_split(sentence: str) -> list[str]:
         # "the 11x5 bathroom is ...": a size in front of the room is not the end of a description
         and not re.search(r"\b(?:the|a|an)\s+[\d.x*'\"]+\s*$", sentence[: m.start(2)])]
     # a request's list of rooms: "a clinic with a pharmacy on the east side, and a cafe in ..."
-    cuts += [m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?D:)", sentence)]
+    cuts += [m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?(?:D:\w+\s+)+(?:corner|(?:side|part|end|wing)\s+of\s+the\s+" + _PLACE + r"))", sentence)]
     cuts = sorted(set(c for c in cuts if c > 0))
     if not cuts:
         return [sentence]
@@ -538,7 +538,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             for o in others:
                 out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
-    pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
+    pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
     for m in re.finditer(pat_before, text):
         others = rooms_in(m.group(m.lastindex or 0))
         if not others or not free(m.start(), m.end()):
@@ -600,6 +600,13 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if re.search(r"\b(?:door|entry|entrance|window|opening)\s+(?:\w+\s+){0,3}$", before):
             continue
         if re.match(r"\s+(?:of|from)\s+(?:the\s+)?R\d+", after):  # relation left over (e.g. to itself)
+            continue
+        # dimensions ("the north and south side length is 3 feet") and doors are not positions
+        if re.match(r"(?:\s*(?:and|,|&)\s*D:\w+)*\s+(?:sides?\s+)?(?:length|lenght|width|measures?|dimension)", after):
+            continue
+        if re.match(r"\s+(?:of|from)\s+(?:the\s+)?(?:main\s+|front\s+)?(?:door|entrance|entry|doorway)", after):
+            continue
+        if re.match(r"(?:\s*(?:and|,)\s*D:\w+)*\s+(?:facing\s+)?(?:front\s+|main\s+)?(?:door|entrance|entry)", after):
             continue
         out.append(Statement(subject=subj, kind="position", direction=d, text=_plain(text[max(0, m.start() - 20) : m.end() + 25], mentions)))
 
@@ -786,3 +793,4 @@ def _canonical(m: RoomMention, by_type: dict[str, list[str]]) -> tuple[str, int 
     if n is not None and len(by_type.get(kind, [])) <= 1:
         n = None  # "bathroom 1" when there is one bathroom
     return (kind, n)
+
