@@ -100,6 +100,11 @@ def eval_floorplan(
         f"{report.failures} failures, {report.fallbacks} used the fallback; "
         f"{report.seconds:.1f} s"
     )
+    if report.plans > 1 and all(p.id.isdigit() for p in report.per_plan):
+        for name, rest in (("odd", 1), ("even", 0)):
+            micro, macro, n = report.subset(lambda pid, r=rest: int(pid) % 2 == r)
+            if n:
+                console.print(f"  {name} ids: micro {micro:.2f}, macro {macro:.2f} ({n} plans)")
     for failure in (p for p in report.per_plan if p.failed):
         console.print(f"  failed {escape(failure.id)}: {escape(failure.error or '')}", soft_wrap=True)
     if json_out is not None:

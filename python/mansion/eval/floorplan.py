@@ -51,6 +51,8 @@ class PlanResult(BaseModel):
     seconds: float
     #: The seeds the solver used when they did not come from the ground truth (solver frame).
     seeds: dict[str, tuple[float, float]] | None = None
+    #: No seed set read from the text could be laid out: the solver's own heuristic seeded it.
+    heuristic_seeds: bool = False
 
 
 class EvalReport(BaseModel):
@@ -89,15 +91,17 @@ def solve_plan(
     settings: SolverSettings | None = None,
     rng_seed: int = 0,
     seeds: dict[str, tuple[float, float]] | None = None,
+    heuristic: bool = False,
 ) -> Any:
     """Solve one plan under the protocol; returns the predicted 64×64 class map (row 0 = top)
-    and the layout. ``seeds`` (node id → solver-frame point) replace the ground-truth centroids.
+    and the layout. ``seeds`` (node id → solver-frame point) replace the ground-truth centroids;
+    ``heuristic=True`` uses neither (the solver's own offline seed heuristic).
     Raises :class:`MansionError` when the solver fails."""
     inputs = protocol_inputs(plan)
     layout = solve_floor(
         inputs.graph,
         inputs.footprint,
-        seed_planner=FixedSeedPlanner(inputs.seeds if seeds is None else seeds),
+        seed_planner=None if heuristic else FixedSeedPlanner(inputs.seeds if seeds is None else seeds),
         weights=weights,
         settings=settings,
         cell_size=CELL_SIZE,
@@ -131,8 +135,11 @@ def _score_one(job: Job) -> tuple[PlanResult, Any]:
             seeds, pred, layout = solve_from_text(
                 plan, seeds.description,
                 lambda s: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=s),
+                lambda: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, heuristic=True),
             )
+            heuristic = seeds is None
         else:
+            heuristic = False
             pred, layout = solve_plan(
                 plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=seeds
             )
@@ -155,6 +162,7 @@ def _score_one(job: Job) -> tuple[PlanResult, Any]:
         rooms=len(plan.rooms),
         seconds=time.perf_counter() - t0,
         seeds=seeds,
+        heuristic_seeds=heuristic,
     )
     return result, pred
 
@@ -297,7 +305,7 @@ def write_gallery(
             else:
                 pred, _ = solve_plan(
                     plan, mode=report.mode, weights=report.weights, settings=report.settings,
-                    rng_seed=report.rng_seed, seeds=r.seeds,
+                    rng_seed=report.rng_seed, seeds=r.seeds, heuristic=r.heuristic_seeds,
                 )
             title = f"{tag} {rank}: plan {r.id} — micro {r.micro:.1f}, macro {r.macro:.1f}"
             if r.failed:

@@ -77,11 +77,16 @@ def plan_text_seeds_offline(
 
 
 def solve_from_text(
-    plan: T2DPlan, description: str, solve: Callable[[dict[str, tuple[float, float]]], tuple[Any, Any]]
-) -> tuple[dict[str, tuple[float, float]], Any, Any]:
+    plan: T2DPlan,
+    description: str,
+    solve: Callable[[dict[str, tuple[float, float]]], tuple[Any, Any]],
+    fallback: Callable[[], tuple[Any, Any]] | None = None,
+) -> tuple[dict[str, tuple[float, float]] | None, Any, Any]:
     """Try the seed sets of :data:`VARIANTS` with ``solve(seeds) -> (prediction, layout)`` and keep
-    the layout that agrees best with the text. Raises the last :class:`MansionError` when no seed
-    set can be laid out."""
+    the layout that agrees best with the text. When no seed set can be laid out, ``fallback()``
+    (the solver's own seed heuristic, which reads neither the text nor the ground truth) is tried,
+    and its seeds are reported as None; without one, or when it fails too, the last
+    :class:`MansionError` is raised."""
     p = text_problem(plan, description)
     base = SeedWeights()
     best: tuple[float, int, dict[str, tuple[float, float]], Any, Any] | None = None
@@ -102,5 +107,8 @@ def solve_from_text(
             best = (score, k, seeds, pred, layout)
     if best is None:
         assert error is not None
-        raise error
+        if fallback is None:
+            raise error
+        pred, layout = fallback()
+        return None, pred, layout
     return best[2], best[3], best[4]

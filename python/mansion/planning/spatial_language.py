@@ -263,6 +263,9 @@ class _Lexicon:
 def _lexicon(types: Sequence[str]) -> _Lexicon:
     words: dict[str, str] = {}
     known = set(types)
+    # a room type's own name wins over another type's synonym ("pantry" when there is a pantry)
+    for kind in sorted(known):
+        words[re.escape(kind.replace("_", " ")).replace(r"\ ", r"\s+")] = kind
     for kind, syns in _RESIDENTIAL:
         if kind in known or kind == "bedroom" and ({"master_room", "common_room", "bedroom"} & known):
             for s in syns:

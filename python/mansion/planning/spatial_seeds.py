@@ -279,7 +279,7 @@ def place_seeds(
                 if ux:
                     short = np.maximum(0.0, w.gap * sx - ux * dx)
                     total = total + weight * (short / scale) ** 2
-                elif True:
+                else:
                     # due north/south: the two should also overlap in x
                     total = total + 0.25 * weight * (np.maximum(0.0, np.abs(dx) - sx) / scale) ** 2
                 if uy:
