@@ -689,13 +689,13 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
         out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=oriented or swapped, text=_plain(m.group(0), mentions)))
     if not out:
         # "8 feet in width and 6 feet in length", "10 feet width and 12 feet length"
-        m = re.search(_NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long)\b.{0,30}?" + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long|depth|deep)\b", text)
-        if m:
-            a, b = float(m.group(1)), float(m.group(4))
-            unit = _unit(m.group(2) or m.group(5), text)
-            w, d = (a, b) if m.group(3).startswith("wid") else (b, a)
-            spans.append((m.start(), m.end()))
-            out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=True, text=_plain(m.group(0), mentions)))
+        pair = re.search(_NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long)\b.{0,30}?" + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long|depth|deep)\b", text)
+        if pair:
+            a, b = float(pair.group(1)), float(pair.group(4))
+            unit = _unit(pair.group(2) or pair.group(5), text)
+            w, d = (a, b) if pair.group(3).startswith("wid") else (b, a)
+            spans.append((pair.start(), pair.end()))
+            out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=True, text=_plain(pair.group(0), mentions)))
     for m in re.finditer(_NUM_RE + r"\s*(?:square|sq\.?|sqrt|sqr)\s*(feet|foot|ft|meters?|metres?|m)\b|" + _NUM_RE + r"\s*(sqft|sq\.?ft|ft2|ft²|m2|m²|sqm)\b", text):
         if any(not (m.end() <= a or m.start() >= b) for a, b in spans):
             continue
@@ -705,9 +705,9 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
         if value > 0:
             out.append(Statement(subject=subj, kind="size", area=value * scale, text=_plain(m.group(0), mentions)))
     if not out:
-        m = re.search(r"\barea\s+(?:is|of)\s+(?:about\s+|approximately\s+|around\s+)?" + _NUM_RE, text)
-        if m and float(m.group(1)) > 0:
-            out.append(Statement(subject=subj, kind="size", area=float(m.group(1)) * _FEET**2, text=_plain(m.group(0), mentions)))
+        said = re.search(r"\barea\s+(?:is|of)\s+(?:about\s+|approximately\s+|around\s+)?" + _NUM_RE, text)
+        if said and float(said.group(1)) > 0:
+            out.append(Statement(subject=subj, kind="size", area=float(said.group(1)) * _FEET**2, text=_plain(said.group(0), mentions)))
     return out
 
 

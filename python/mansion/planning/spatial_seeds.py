@@ -408,20 +408,19 @@ def match_rooms(
             for old in named:
                 for s in statements.get(old, []):
                     for m in s.others:
-                        other = resolved.get(m.key)
-                        if other is None:
+                        named_other = resolved.get(m.key)
+                        if named_other is None:
                             continue
-                        other = perm.get(other, other)
-                        total += 0.5 if frozenset((perm[old], other)) in adj else 0.0
+                        total += 0.5 if frozenset((perm[old], perm.get(named_other, named_other))) in adj else 0.0
             # statements by others naming these rooms
             for rid, ss in statements.items():
                 if rid in named:
                     continue
                 for s in ss:
                     for m in s.others:
-                        o = resolved.get(m.key)
-                        if o in perm:
-                            total += 0.5 if frozenset((rid, perm[o])) in adj else 0.0
+                        ref = resolved.get(m.key)
+                        if ref is not None and ref in perm:
+                            total += 0.5 if frozenset((rid, perm[ref])) in adj else 0.0
             return total
 
         best: tuple[float, dict[str, str]] | None = None
