@@ -31,14 +31,14 @@ __all__ = ["TextProblem", "plan_text_seeds_offline", "solve_from_text", "text_pr
 #: The weightings tried, beside the defaults: relations tighter or looser, the hub's box smaller
 #: or larger, compass words stronger, adjacency stronger.
 VARIANTS: tuple[dict[str, Any], ...] = (
-    {},
     {"overlap": 0.0, "fit": 0.0, "hub_leftover": False, "adjacency": 0.0},
-    {"hub_leftover": False},
-    {"gap": 1.0},
-    {"hub_shrink": 0.8, "overlap": 1.0},
-    {"position": 8.0, "relation": 2.0},
-    {"adjacency": 3.0, "next_to": 2.0},
+    {"overlap": 0.0, "fit": 0.0, "hub_leftover": False, "adjacency": 0.0, "inset": 0.7},
+    {"overlap": 0.0, "fit": 0.0, "hub_leftover": False, "adjacency": 0.0, "gap": 1.0},
+    {"overlap": 0.0, "fit": 0.0, "adjacency": 0.0},
+    {"overlap": 0.5, "fit": 0.5, "hub_leftover": False},
     {"fit": 0.5, "inset": 0.7},
+    {},
+    {"hub_shrink": 0.8, "overlap": 1.0},
 )
 
 
