@@ -193,6 +193,12 @@ def test_misspelt_room_words() -> None:
     }
 
 
+def test_storeys_are_not_positions() -> None:
+    rooms = [KnownRoom("lobby", "lobby"), KnownRoom("reading_room", "reading_room")]
+    assert facts("a library with a reading room on the top floor and a lobby on the lower level", rooms) == set()
+    assert facts("a library with a reading room at the top of the plan", rooms) == {("reading_room", "position", "north", ())}
+
+
 def test_what_cannot_be_read_is_reported() -> None:
     reading = read_description("Lovely light all day. The kitchen is in the north.", FLAT)
     assert any("lovely light" in u for u in reading.unread)

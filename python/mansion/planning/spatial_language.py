@@ -169,10 +169,11 @@ _DIR_WORD = {
 }
 _COMPOUND = re.compile(
     r"\b(north|south|east|west|upper|top|lower|bottom)(?:ern|erly|ward)?\s*-?\s*"
-    r"(east|west|north|south|left|right)(?:ern|erly|ward)?\b"
+    r"(east|west|north|south|left|right)(?:ern|erly|ward)?\b(?!\s*(?:floors?|storeys?|levels?)\b)"
 )
 _SINGLE = re.compile(r"\b(north|south|east|west)(?:ern|erly|ward|wards)?\b")
-_SCREEN = re.compile(r"\b(upper|top|lower|bottom|left|right)\b")
+# "the top floor", "a lower level" name storeys, not parts of a plan
+_SCREEN = re.compile(r"\b(upper|top|lower|bottom|left|right)\b(?!\s*(?:floors?|storeys?|story|stories|levels?|decks?|ground)\b)")
 
 
 def _compound(a: str, b: str) -> str | None:
