@@ -152,7 +152,7 @@ def generate_building(
             continue
         graph = plan.plan_topology(program, index)
         below = done[index - 1] if index > 0 else None
-        done.append(solve_building_floor(program, index, graph, below, seed, solver))
+        done.append(solve_building_floor(program, index, graph, below, seed, solver, description=description))
     if progress:
         progress("checks", total, total)
     return finish_building(description, seed, plan.name, program, palette, done, min_contact)

@@ -32,7 +32,7 @@ from mansion.building.load_bearing import (
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
-from mansion.models.building import Building, BuildingProgram, Floor, Palette, RoomCard
+from mansion.models.building import Building, BuildingProgram, Floor, Palette, PositionWord, RoomCard
 
 __all__ = [
     "ATTEMPTS",
@@ -150,6 +150,9 @@ def _solve(
         if attempt >= 2 and any(e.kind == "adjacent" for e in graph.edges):
             g = _without_adjacent(g)
             relax.append("adjacent edges dropped")
+        if attempt >= 2 and getattr(sp, "reading", None) is not None:
+            sp = None  # the description's position words (floorplan.text_seeds) could not be met
+            relax.append("position words of the description dropped")
         if attempt >= 3 and footprint.fixed_walls:
             fp = footprint.model_copy(update={"fixed_walls": []})
             sp = None
@@ -206,6 +209,7 @@ def solve_building_floor(
     seed: int,
     solver: dict[str, Any],
     seed_planner: SeedPlanner | None = None,
+    description: str | None = None,
 ) -> Floor:
     """SolveFloorLayout for floor ``index`` (not a copy) of ``program``.
 
@@ -217,6 +221,14 @@ def solve_building_floor(
     floor_program = program.floor_program(index)
     fp = floor_footprint(program, index)
     planner = seed_planner
+    text_planner = None
+    if planner is None and description:
+        # the description's position words ("the kitchen in the north-east corner") seed the
+        # rooms they name; a floor they do not mention keeps the solver's heuristic
+        from mansion.floorplan.text_seeds import text_seed_planner
+
+        text_planner = text_seed_planner(description, graph, fp, solver.get("cell_size", 0.5))
+        planner = text_planner
     if program.load_bearing_walls and below is not None and below.carried_walls:
         walls = carry_walls(below.carried_walls, fp)
         if walls:
@@ -231,12 +243,20 @@ def solve_building_floor(
                 )
     layout, graph, fp, rng_seed, attempts, relax = _solve(index, graph, fp, planner, seed, solver)
     notes = {r.id: r.notes for r in floor_program.rooms}
+    words: list[PositionWord] = []
+    if text_planner is not None:
+        from mansion.floorplan.text_seeds import position_checks
+
+        centroids = {room.id: (room.centroid[0], room.centroid[1]) for room in layout.rooms}
+        words = [PositionWord(room=c.room, statement=c.text, honoured=c.honoured) for c in position_checks(text_planner, centroids)]
     return Floor(
         index=index, graph=graph, footprint=fp, layout=layout,
         room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
         relaxations=[*floor_program.relaxations, *relax],
         carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
+        position_words=words,
     )
+
 
 
 def finish_building(

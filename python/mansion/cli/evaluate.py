@@ -25,6 +25,7 @@ class ModeChoice(str, Enum):
 class SeedChoice(str, Enum):
     ground_truth = "ground-truth"
     anthropic = "anthropic"
+    text = "text"
 
 
 def _progress(console: Console) -> Progress:
@@ -61,8 +62,8 @@ def eval_floorplan(
     planner: Annotated[
         SeedChoice,
         typer.Option(
-            help="Seeds: the ground-truth centroids (MA protocol), or Claude reading "
-            "DIR/text/<id>.txt (needs ANTHROPIC_API_KEY)."
+            help="Seeds: the ground-truth centroids (MA protocol), Claude reading "
+            "DIR/text/<id>.txt (needs ANTHROPIC_API_KEY), or the same text read offline (text)."
         ),
     ] = SeedChoice.ground_truth,
 ) -> None:
@@ -83,7 +84,7 @@ def eval_floorplan(
                 rng_seed=seed,
                 workers=workers,
                 progress=lambda done, total: bar.update(task, completed=done, total=total),
-                seeds="anthropic" if planner is SeedChoice.anthropic else "ground_truth",
+                seeds={"ground-truth": "ground_truth"}.get(planner.value, planner.value),  # type: ignore[arg-type]
             )
         if json_out is not None:
             report.save(json_out)
@@ -99,6 +100,11 @@ def eval_floorplan(
         f"{report.failures} failures, {report.fallbacks} used the fallback; "
         f"{report.seconds:.1f} s"
     )
+    if report.plans > 1 and all(p.id.isdigit() for p in report.per_plan):
+        for name, rest in (("odd", 1), ("even", 0)):
+            micro, macro, n = report.subset(lambda pid, r=rest: int(pid) % 2 == r)
+            if n:
+                console.print(f"  {name} ids: micro {micro:.2f}, macro {macro:.2f} ({n} plans)")
     for failure in (p for p in report.per_plan if p.failed):
         console.print(f"  failed {escape(failure.id)}: {escape(failure.error or '')}", soft_wrap=True)
     if json_out is not None:

@@ -32,9 +32,9 @@ if TYPE_CHECKING:
 __all__ = ["EvalReport", "PlanResult", "evaluate_floorplans", "solve_plan", "write_gallery"]
 
 Mode = Literal["hierarchical", "flat"]
-#: Where the seeds come from: the protocol's ground-truth centroids (MA), or Claude reading the
-#: plan's description (the paper's end-to-end setting).
-SeedSource = Literal["ground_truth", "anthropic"]
+#: Where the seeds come from: the protocol's ground-truth centroids (MA), or the plan's description
+#: (the paper's end-to-end setting) read by Claude or, offline, by :mod:`mansion.planning.spatial_language`.
+SeedSource = Literal["ground_truth", "anthropic", "text"]
 
 
 class PlanResult(BaseModel):
@@ -51,6 +51,8 @@ class PlanResult(BaseModel):
     seconds: float
     #: The seeds the solver used when they did not come from the ground truth (solver frame).
     seeds: dict[str, tuple[float, float]] | None = None
+    #: No seed set read from the text could be laid out: the solver's own heuristic seeded it.
+    heuristic_seeds: bool = False
 
 
 class EvalReport(BaseModel):
@@ -89,15 +91,17 @@ def solve_plan(
     settings: SolverSettings | None = None,
     rng_seed: int = 0,
     seeds: dict[str, tuple[float, float]] | None = None,
+    heuristic: bool = False,
 ) -> Any:
     """Solve one plan under the protocol; returns the predicted 64×64 class map (row 0 = top)
-    and the layout. ``seeds`` (node id → solver-frame point) replace the ground-truth centroids.
+    and the layout. ``seeds`` (node id → solver-frame point) replace the ground-truth centroids;
+    ``heuristic=True`` uses neither (the solver's own offline seed heuristic).
     Raises :class:`MansionError` when the solver fails."""
     inputs = protocol_inputs(plan)
     layout = solve_floor(
         inputs.graph,
         inputs.footprint,
-        seed_planner=FixedSeedPlanner(inputs.seeds if seeds is None else seeds),
+        seed_planner=None if heuristic else FixedSeedPlanner(inputs.seeds if seeds is None else seeds),
         weights=weights,
         settings=settings,
         cell_size=CELL_SIZE,
@@ -109,7 +113,13 @@ def solve_plan(
     return solver_to_mask(layout.grid, inputs.classes), layout
 
 
-Job = tuple[str, str, Mode, EnergyWeights, SolverSettings, int, "dict[str, tuple[float, float]] | str | None"]
+class FromText(BaseModel):
+    """A job's seeds are to be read from this description in the worker (``seeds="text"``)."""
+
+    description: str
+
+
+Job = tuple[str, str, Mode, EnergyWeights, SolverSettings, int, "dict[str, tuple[float, float]] | str | FromText | None"]
 
 
 def _score_one(job: Job) -> tuple[PlanResult, Any]:
@@ -119,9 +129,20 @@ def _score_one(job: Job) -> tuple[PlanResult, Any]:
     try:
         if isinstance(seeds, str):  # the seed planner failed on this plan: a failure, scored 0
             raise MansionError(seeds)
-        pred, layout = solve_plan(
-            plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=seeds
-        )
+        if isinstance(seeds, FromText):
+            from mansion.eval.text_placement import solve_from_text
+
+            seeds, pred, layout = solve_from_text(
+                plan, seeds.description,
+                lambda s: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=s),
+                lambda: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, heuristic=True),
+            )
+            heuristic = seeds is None
+        else:
+            heuristic = False
+            pred, layout = solve_plan(
+                plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=seeds
+            )
     except MansionError as exc:
         return (
             PlanResult(
@@ -141,6 +162,7 @@ def _score_one(job: Job) -> tuple[PlanResult, Any]:
         rooms=len(plan.rooms),
         seconds=time.perf_counter() - t0,
         seeds=seeds,
+        heuristic_seeds=heuristic,
     )
     return result, pred
 
@@ -166,7 +188,8 @@ def evaluate_floorplans(
     not depend on it. ``progress(done, total)`` is called after each plan.
     ``seeds="anthropic"`` has Claude place the seeds from ``DIR/text/<id>.txt`` first (one request
     per plan, through ``client``, default an :class:`LLMClient` from the environment); a plan whose
-    seeds cannot be planned counts as a failure.
+    seeds cannot be planned counts as a failure. ``seeds="text"`` reads the same files offline
+    (:func:`mansion.eval.text_placement.solve_from_text`, in the workers).
     """
     if mode not in ("hierarchical", "flat"):
         raise InvalidInputError(f"mode must be 'hierarchical' or 'flat', got {mode!r}")
@@ -180,11 +203,13 @@ def evaluate_floorplans(
     if not chosen:
         raise InvalidInputError(f"no plans to evaluate in {str(data)!r}")
     folder = plans_folder(data)
-    planned: dict[str, dict[str, tuple[float, float]] | str | None] = dict.fromkeys(chosen)
+    planned: dict[str, dict[str, tuple[float, float]] | str | FromText | None] = dict.fromkeys(chosen)
     if seeds == "anthropic":
         planned.update(_text_seeds(Path(data), folder, chosen, client))
+    elif seeds == "text":
+        planned.update({pid: FromText(description=_read_text(Path(data), pid)) for pid in chosen})
     elif seeds != "ground_truth":
-        raise InvalidInputError(f"seeds must be 'ground_truth' or 'anthropic', got {seeds!r}")
+        raise InvalidInputError(f"seeds must be 'ground_truth', 'anthropic' or 'text', got {seeds!r}")
     jobs: list[Job] = [
         (pid, str(folder / f"{pid}.json"), mode, w, s, rng_seed, planned[pid]) for pid in chosen
     ]
@@ -247,6 +272,14 @@ def _text_seeds(
     return out
 
 
+def _read_text(data: Path, pid: str) -> str:
+    text_path = data / "text" / f"{pid}.txt"
+    try:
+        return text_path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InvalidInputError(f"no description for plan {pid}: {text_path} ({exc.strerror})") from exc
+
+
 def write_gallery(
     data: str | os.PathLike[str],
     report: EvalReport,
@@ -272,7 +305,7 @@ def write_gallery(
             else:
                 pred, _ = solve_plan(
                     plan, mode=report.mode, weights=report.weights, settings=report.settings,
-                    rng_seed=report.rng_seed, seeds=r.seeds,
+                    rng_seed=report.rng_seed, seeds=r.seeds, heuristic=r.heuristic_seeds,
                 )
             title = f"{tag} {rank}: plan {r.id} — micro {r.micro:.1f}, macro {r.macro:.1f}"
             if r.failed:

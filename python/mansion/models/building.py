@@ -35,6 +35,7 @@ __all__ = [
     "FloorCopy",
     "FloorProgram",
     "Palette",
+    "PositionWord",
     "ProgramRoom",
     "RoomCard",
 ]
@@ -184,6 +185,15 @@ class RoomCard(BaseModel):
     notes: str = ""
 
 
+class PositionWord(BaseModel):
+    """A statement of the description placing a room ("the kitchen in the north-east corner"):
+    the room it is about, the statement, and whether the solved floor honours it."""
+
+    room: str
+    statement: str
+    honoured: bool
+
+
 class Floor(BaseModel):
     """One solved floor of the building."""
 
@@ -201,6 +211,10 @@ class Floor(BaseModel):
     carried_walls: list[tuple[Point, Point]] = Field(
         default_factory=list,
         description="The load-bearing walls this floor passes to the floor above.",
+    )
+    position_words: list[PositionWord] = Field(
+        default_factory=list,
+        description="What the description said about where this floor's rooms go, and whether the layout honours it.",
     )
 
 

@@ -1,0 +1,114 @@
+"""The T2D text setting without a model: seeds read from a plan's description by
+:mod:`mansion.planning.spatial_language` and placed by :mod:`mansion.planning.spatial_seeds`.
+
+From the protocol (:func:`mansion.eval.t2d.protocol_inputs`) come the free region, each room's
+type and target area, and the adjacency pairs, exactly as with ``--planner anthropic``; from the
+text come the positions, relations, stated sizes and exterior walls. The ground-truth centroids
+are never read.
+
+A few seed sets are tried (the seed solve under a handful of weightings); each is solved and the
+layout that agrees best with the text (:func:`mansion.planning.spatial_seeds.layout_disagreement`:
+rooms reaching the walls they are said to be at, relations in the right order, areas and
+adjacency met) is kept. A seed set the solver cannot lay out is skipped; only when none can is
+the plan a failure.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from typing import Any
+
+from mansion.eval.t2d import CELL_SIZE, GRID, T2DPlan, protocol_inputs
+from mansion.exceptions import MansionError
+from mansion.planning.spatial_language import KnownRoom, Reading, read_description
+from mansion.planning.spatial_seeds import (
+    FreeGrid, SeedReport, SeedRoom, SeedWeights, layout_disagreement, match_rooms, place_seeds,
+)
+
+__all__ = ["TextProblem", "plan_text_seeds_offline", "solve_from_text", "text_problem"]
+
+#: The weightings tried, beside the defaults: relations tighter or looser, the hub's box smaller
+#: or larger, compass words stronger, adjacency stronger.
+VARIANTS: tuple[dict[str, Any], ...] = (
+    {"overlap": 0.0, "fit": 0.0, "hub_leftover": False, "adjacency": 0.0},
+    {"overlap": 0.0, "fit": 0.0, "hub_leftover": False, "adjacency": 0.0, "inset": 0.7},
+    {"overlap": 0.0, "fit": 0.0, "hub_leftover": False, "adjacency": 0.0, "gap": 1.0},
+    {"overlap": 0.0, "fit": 0.0, "adjacency": 0.0},
+    {"overlap": 0.5, "fit": 0.5, "hub_leftover": False},
+    {"fit": 0.5, "inset": 0.7},
+    {},
+    {"hub_shrink": 0.8, "overlap": 1.0},
+)
+
+
+@dataclass(frozen=True)
+class TextProblem:
+    """What the seed solve works from for one plan."""
+
+    reading: Reading
+    rooms: list[SeedRoom]
+    free: FreeGrid
+    adjacency: list[tuple[str, str]]
+
+
+def text_problem(plan: T2DPlan, description: str) -> TextProblem:
+    """The protocol's rooms, areas, adjacency and free region, and the reading of ``description``."""
+    import numpy as np
+
+    inputs = protocol_inputs(plan)
+    nodes = inputs.graph.nodes
+    known = [KnownRoom(n.id, n.room_type or "room") for n in nodes]
+    rooms = [SeedRoom(n.id, n.room_type or "room", n.area) for n in nodes]
+    adjacency = [(e.source, e.target) for e in inputs.graph.edges]
+    reading = match_rooms(read_description(description, known), rooms, adjacency)
+    # the free mask with rows going up: mask row r (top) is solver row GRID - 1 - r
+    free = FreeGrid(np.ascontiguousarray((plan.label_array() != 0)[::-1]), (0.0, 0.0), CELL_SIZE)
+    assert free.mask.shape == (GRID, GRID)
+    return TextProblem(reading, rooms, free, adjacency)
+
+
+def plan_text_seeds_offline(
+    plan: T2DPlan, description: str, *, weights: SeedWeights | None = None
+) -> tuple[dict[str, tuple[float, float]], SeedReport]:
+    """Seeds of every room of ``plan`` (node id → solver-frame point) from ``description``."""
+    p = text_problem(plan, description)
+    return place_seeds(p.reading, p.rooms, p.free, p.adjacency, weights=weights)
+
+
+def solve_from_text(
+    plan: T2DPlan,
+    description: str,
+    solve: Callable[[dict[str, tuple[float, float]]], tuple[Any, Any]],
+    fallback: Callable[[], tuple[Any, Any]] | None = None,
+) -> tuple[dict[str, tuple[float, float]] | None, Any, Any]:
+    """Try the seed sets of :data:`VARIANTS` with ``solve(seeds) -> (prediction, layout)`` and keep
+    the layout that agrees best with the text. When no seed set can be laid out, ``fallback()``
+    (the solver's own seed heuristic, which reads neither the text nor the ground truth) is tried,
+    and its seeds are reported as None; without one, or when it fails too, the last
+    :class:`MansionError` is raised."""
+    p = text_problem(plan, description)
+    base = SeedWeights()
+    best: tuple[float, int, dict[str, tuple[float, float]], Any, Any] | None = None
+    error: MansionError | None = None
+    tried: list[dict[str, tuple[float, float]]] = []
+    for k, variant in enumerate(VARIANTS):
+        seeds, _ = place_seeds(p.reading, p.rooms, p.free, p.adjacency, weights=replace(base, **variant))
+        if seeds in tried:
+            continue
+        tried.append(seeds)
+        try:
+            pred, layout = solve(seeds)
+        except MansionError as exc:
+            error = exc
+            continue
+        score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
+        if best is None or score < best[0]:
+            best = (score, k, seeds, pred, layout)
+    if best is None:
+        assert error is not None
+        if fallback is None:
+            raise error
+        pred, layout = fallback()
+        return None, pred, layout
+    return best[2], best[3], best[4]

@@ -1,0 +1,800 @@
+"""Reading where rooms are from plain English: compass positions, relations, sizes, exterior walls.
+
+A description such as "The bathroom is in the northeast corner with the common room to the south
+and the living room to the west. It is approximately 12 feet wide by 5 feet deep." becomes a list
+of :class:`Statement` about the rooms it is told about:
+
+- ``position``: the subject lies in a part of the plan (a corner, a side, the centre);
+- ``relation``: the subject lies north/south/east/west of another room, between two rooms, next to
+  one, or across from one;
+- ``size``: a width and depth (metres, converted from feet when the text says feet or gives no
+  unit, as floor-plan prose in the US style does) or an area;
+- ``exterior``: one of the subject's walls is an outside wall.
+
+The reader is a small grammar over a normalised token stream: room mentions become ``R<k>``
+tokens, compass words ``D:<dir>`` tokens, and a sentence's subject is the room it opens with (or
+the previous subject for "It ..."/"The room ..."). It never guesses a room it was not told about:
+:func:`read_description` takes the rooms of the plan (ids and types) and resolves numbered and
+ordinal names ("bathroom 2", "the second bedroom", "com 1"), synonyms ("master bedroom", "bath",
+"washroom", "lounge") and bare type words ("the common room") against them. Everything it could
+not read is kept (:attr:`Reading.unread`) so a caller can say what was ignored.
+
+Pure Python (``re``); the seeds that follow from a reading are :mod:`mansion.planning.spatial_seeds`.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from mansion.planning.vocabulary import ROOM_SYNONYMS
+
+__all__ = [
+    "DIRECTIONS",
+    "KnownRoom",
+    "Reading",
+    "RoomMention",
+    "Statement",
+    "direction_vector",
+    "read_description",
+]
+
+#: Compass directions the reader produces, with their unit vector (x east, y north).
+DIRECTIONS: dict[str, tuple[int, int]] = {
+    "north": (0, 1), "south": (0, -1), "east": (1, 0), "west": (-1, 0),
+    "northeast": (1, 1), "northwest": (-1, 1), "southeast": (1, -1), "southwest": (-1, -1),
+    "centre": (0, 0),
+}
+_OPPOSITE = {
+    "north": "south", "south": "north", "east": "west", "west": "east",
+    "northeast": "southwest", "southwest": "northeast", "northwest": "southeast",
+    "southeast": "northwest", "centre": "centre",
+}
+_FEET = 0.3048
+
+
+def direction_vector(direction: str) -> tuple[int, int]:
+    """The unit step of a direction word of :data:`DIRECTIONS` (``centre`` is (0, 0))."""
+    return DIRECTIONS[direction]
+
+
+@dataclass(frozen=True)
+class KnownRoom:
+    """A room the reader may resolve mentions to: its id, its type (``"common_room"``,
+    ``"pharmacy"``), and optionally a display name."""
+
+    id: str
+    room_type: str
+    name: str | None = None
+
+
+@dataclass(frozen=True)
+class RoomMention:
+    """A room named in the text: its type, the number the text gave it (``bathroom 2``, ``the
+    second bedroom``) or None, and the words used."""
+
+    room_type: str
+    number: int | None
+    words: str
+
+    @property
+    def key(self) -> tuple[str, int | None]:
+        return (self.room_type, self.number)
+
+
+@dataclass(frozen=True)
+class Statement:
+    """One thing the text says about a room.
+
+    ``kind`` is ``position`` (``direction`` is where in the plan), ``relation`` (``relation`` is
+    one of ``north_of`` … ``southwest_of``, ``between``, ``next_to``, ``across_from``; ``others``
+    the rooms it is relative to), ``size`` (``width``/``depth`` in metres, either may be None;
+    ``area`` in m²; ``oriented`` when the text said which is east-west) or ``exterior``
+    (``direction`` of the outside wall). ``text`` is the clause it came from.
+    """
+
+    subject: RoomMention
+    kind: str
+    text: str
+    direction: str | None = None
+    relation: str | None = None
+    others: tuple[RoomMention, ...] = ()
+    width: float | None = None
+    depth: float | None = None
+    area: float | None = None
+    oriented: bool = False
+
+
+@dataclass
+class Reading:
+    """What :func:`read_description` understood: statements about resolved rooms (by room id),
+    and what it could not use."""
+
+    #: Statements with their subject resolved, by room id (in the order they were read).
+    statements: dict[str, list[Statement]] = field(default_factory=dict)
+    #: Clauses the reader found nothing in.
+    unread: list[str] = field(default_factory=list)
+    #: Statements whose subject or other room is not one of the known rooms (with the reason).
+    unresolved: list[tuple[Statement, str]] = field(default_factory=list)
+    #: Mention key (type, number) → room id, as resolved.
+    resolved: dict[tuple[str, int | None], str] = field(default_factory=dict)
+
+    def about(self, room_id: str) -> list[Statement]:
+        return self.statements.get(room_id, [])
+
+    def all(self) -> list[tuple[str, Statement]]:
+        return [(rid, s) for rid, ss in self.statements.items() for s in ss]
+
+
+# -- normalisation ------------------------------------------------------------------------------
+
+_NUMBER_WORDS = {
+    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8,
+    "nine": 9, "ten": 10, "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14,
+    "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18, "nineteen": 19, "twenty": 20,
+    "twenty-five": 25, "thirty": 30, "forty": 40, "fifty": 50,
+}
+_ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "1st": 1, "2nd": 2, "3rd": 3, "4th": 4}
+
+#: Spelling variants folded before anything else reads the text.
+_FOLDS: tuple[tuple[str, str], ...] = (
+    (r"[’‘`´]", "'"),
+    (r"[“”]", '"'),
+    (r"#ref!", " "),
+    (r"\bbed\s+rooms?\b", "bedroom"),
+    (r"\bbath\s+rooms?\b", "bathroom"),
+    (r"\bwash\s+rooms?\b", "washroom"),
+    (r"\bliving\s*rooms?\b", "living room"),
+    (r"\blivingroom\b", "living room"),
+    (r"\bkitchen\s+room\b", "kitchen"),
+    (r"\bstore\s*room\b", "storage"),
+    (r"\bcomm?on\s*rooms?\b", "common room"),
+    (r"\bmaster\s+bed\b", "master bedroom"),
+    (r"\bcentral(?:ly)?\b", " centre "),
+    (r"\b(?:center|centre|middle)\b", " centre "),
+    (r"\b(up\s*side|upside)\b", " upside "),
+    (r"\b(down\s*side)\b", " downside "),
+    (r"\b(left\s*side|leftside)\b", " left side "),
+    (r"\b(right\s*side|rightside)\b", " right side "),
+    (r"\bright\s+(?=next|by|beside|above|below|behind|at|in|on|off|outside|near)", " "),
+    (r"\bdog\s*leg\b", " "),
+)
+
+_DIR_WORD = {
+    "north": "north", "northern": "north", "northward": "north", "northerly": "north",
+    "south": "south", "southern": "south", "southward": "south", "southerly": "south",
+    "east": "east", "eastern": "east", "eastward": "east", "easterly": "east",
+    "west": "west", "western": "west", "westward": "west", "westerly": "west",
+}
+_COMPOUND = re.compile(
+    r"\b(north|south|east|west|upper|top|lower|bottom)(?:ern|erly|ward)?\s*-?\s*"
+    r"(east|west|north|south|left|right)(?:ern|erly|ward)?\b(?!\s*(?:floors?|storeys?|levels?)\b)"
+)
+_SINGLE = re.compile(r"\b(north|south|east|west)(?:ern|erly|ward|wards)?\b")
+# "the top floor", "a lower level" name storeys, not parts of a plan
+_SCREEN = re.compile(r"\b(upper|top|lower|bottom|left|right)\b(?!\s*(?:floors?|storeys?|story|stories|levels?|decks?|ground)\b)")
+
+
+def _compound(a: str, b: str) -> str | None:
+    vertical = {"north": "north", "upper": "north", "top": "north", "south": "south", "lower": "south", "bottom": "south"}
+    horizontal = {"east": "east", "right": "east", "west": "west", "left": "west"}
+    if a in vertical and b in horizontal:
+        return vertical[a] + horizontal[b]
+    if a in horizontal and b in ("north", "south"):  # "east north corner"
+        return b + horizontal[a]
+    return None
+
+
+def _directions(text: str) -> str:
+    """Replace compass words by ``D:<direction>`` tokens (screen words too: upper right → NE)."""
+
+    def compound(m: re.Match[str]) -> str:
+        d = _compound(m.group(1), m.group(2))
+        return m.group(0) if d is None else f" D:{d} "
+
+    text = _COMPOUND.sub(compound, text)
+    text = _SINGLE.sub(lambda m: f" D:{_DIR_WORD[m.group(1)]} ", text)
+    screen = {"upper": "north", "top": "north", "lower": "south", "bottom": "south", "left": "west", "right": "east"}
+    text = _SCREEN.sub(lambda m: f" D:{screen[m.group(1)]} ", text)
+    text = re.sub(r"\bcentre\b", " D:centre ", text)
+    return text
+
+
+#: Room words that misspellings are folded to ("kichen", "commanroom", "livingoom", "balocany").
+_SPELLING = {
+    "bathroom": "bathroom", "bedroom": "bedroom", "kitchen": "kitchen", "balcony": "balcony",
+    "livingroom": "living room", "masterroom": "master room", "commonroom": "common room",
+    "living": "living", "master": "master", "common": "common", "dining": "dining",
+    "washroom": "washroom", "storage": "storage", "adjacent": "adjacent", "corner": "corner",
+}
+#: Real words close to a room word that must stay as they are.
+_NOT_TYPOS = frozenset({"enter", "centered", "matter", "mister", "later", "comma", "commons", "comment", "storing", "storey", "corners", "corned", "leaving", "giving", "diving", "lining", "mining", "kitten"})
+
+
+def _fold_spelling(text: str) -> str:
+    """Fold misspelt room words to their spelling (rapidfuzz ratio ≥ 85, words of five letters
+    or more that are not themselves room words or common look-alikes)."""
+    from rapidfuzz import fuzz, process
+
+    choices = list(_SPELLING)
+
+    def fold(m: re.Match[str]) -> str:
+        word = m.group(0)
+        if len(word) < 5 or word in _SPELLING or word in _NOT_TYPOS or word.endswith("s"):
+            return word
+        best = process.extractOne(word, choices, scorer=fuzz.ratio, score_cutoff=85)
+        return _SPELLING[best[0]] if best else word
+
+    return re.sub(r"[a-z]+", fold, text)
+
+
+def _numbers(text: str) -> str:
+    words = "|".join(sorted(_NUMBER_WORDS, key=len, reverse=True))
+    text = re.sub(rf"\b({words})\b", lambda m: str(_NUMBER_WORDS[m.group(1)]), text)
+    # "12'6"" and "12 ft 6 in" → 12.5
+    text = re.sub(r"(\d+)\s*'\s*(\d{1,2})\s*\"", lambda m: f"{int(m.group(1)) + int(m.group(2)) / 12:g}'", text)
+    return text
+
+
+# -- room names ---------------------------------------------------------------------------------
+
+#: Residential room types and the words for them, most specific first. Types not listed here are
+#: read through the planner's vocabulary (:data:`ROOM_SYNONYMS`) and their own name.
+_RESIDENTIAL: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("master_room", (r"master\s+bedroom", r"master'?s?\s+room", r"main\s+bedroom", r"master\s+suite", r"master")),
+    ("common_room", (r"common\s+room", r"common", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
+    ("bedroom", (r"bedroom", r"bed")),
+    ("bathroom", (r"bathroom", r"bath", r"washroom", r"restroom", r"toilet", r"wc", r"lavatory", r"shower\s+room", r"ensuite", r"en\s+suite")),
+    ("living_room", (r"living\s+room", r"living\s+area", r"living", r"lounge", r"sitting\s+room", r"family\s+room", r"hall")),
+    ("dining_room", (r"dining\s+room", r"dining\s+area", r"dining")),
+    ("kitchen", (r"kitchen", r"kitchenette", r"galley")),
+    ("balcony", (r"balcony", r"balconies", r"terrace", r"veranda", r"verandah", r"porch", r"patio", r"deck")),
+    ("storage", (r"storage(?:\s+room)?", r"store", r"closet", r"pantry", r"utility\s+room")),
+)
+_ROMAN = {"i": 1, "ii": 2, "iii": 3, "iv": 4}
+
+
+@dataclass(frozen=True)
+class _Lexicon:
+    pattern: re.Pattern[str]
+    types: dict[str, str]  # lower-case words (spaces normalised) → type
+
+
+def _lexicon(types: Sequence[str]) -> _Lexicon:
+    words: dict[str, str] = {}
+    known = set(types)
+    # a room type's own name wins over another type's synonym ("pantry" when there is a pantry)
+    for kind in sorted(known):
+        words[re.escape(kind.replace("_", " ")).replace(r"\ ", r"\s+")] = kind
+    for kind, syns in _RESIDENTIAL:
+        if kind in known or kind == "bedroom" and ({"master_room", "common_room", "bedroom"} & known):
+            for s in syns:
+                words.setdefault(s, kind)
+    for kind, syns in ROOM_SYNONYMS:
+        if kind in known:
+            for s in syns:
+                words.setdefault(s, kind)
+    for kind in known:
+        name = re.escape(kind.replace("_", " ")).replace(r"\ ", r"\s+")
+        words.setdefault(name, kind)
+    # longest alternatives first so "master bedroom" wins over "master"
+    alternatives = sorted(words, key=lambda w: (-len(w), w))
+    number = r"(?:\s*(?:no\.?|#)?\s*(\d{1,2}|i{1,3}|iv)\b(?!\s*(?:'|\"|x\b|\*|:|×|by\b|ft\b|feet\b|foot\b|m\b|met|sq|square|%|\.\d|/)))?"
+    ordinal = r"(?:\b(first|second|third|fourth|fifth|1st|2nd|3rd|4th|other|another)\s+)?"
+    body = "|".join(f"(?:{w})" for w in alternatives)
+    pattern = re.compile(ordinal + r"\b(" + body + r")(?:'s)?(?:\b|(?=\d))" + number)
+    return _Lexicon(pattern, {w: k for w, k in words.items()})
+
+
+def _type_of(lex: _Lexicon, word: str) -> str:
+    for w, kind in sorted(lex.types.items(), key=lambda kv: -len(kv[0])):
+        if re.fullmatch(w, word):
+            return kind
+    return word
+
+
+# -- clauses and subjects -----------------------------------------------------------------------
+
+_SUBJECT_LEAD = re.compile(
+    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
+)
+_PRONOUN = re.compile(r"^\s*(?:it|its|it's|this|the\s+room|this\s+room|the\s+size|size|which|they|their)\b")
+_PLACE = (
+    r"(?:house|home|plan|floor\s*plan|floorplan|floor|apartment|unit|layout|diagram|image|plane|"
+    r"building|flat|property|structure|space|map|picture|drawing|residence|dwelling|design|level|storey)"
+)
+_PART = r"(?:corner|side|part|portion|end|area|region|section|half|quadrant|edge|zone|location|most|direction|wing|face|facing|quarter)"
+_VERB_AFTER_SUBJECT = re.compile(
+    r"^\s*(?:is|are|was|lies|sits|located|situated|placed|positioned|can|could|has|have|takes|"
+    r"occupies|covers|extends|juts|at|in|on|location|measures|measuring|size|dominates|fills|"
+    r"runs|spans|connects|opens|should|would|will|leads|appears|looks|D:|\(|,|:|-)"
+)
+
+
+@dataclass
+class _Clause:
+    text: str  # normalised, with R<k> and D:<dir> tokens
+    raw: str
+    subject: int | None  # index into mentions
+
+
+def _split_sentences(text: str) -> list[str]:
+    # A full stop ends a sentence unless it is inside a number ("5.5") or an abbreviation ("ft.").
+    parts = re.split(
+        r"(?<!\d)\.(?!\d)(?!\s*(?:by|x|wide|long|deep|tall|high|in|and|or|\d)\b)|(?<=\d)\.(?!\d)|[;!?\n]+", text
+    )
+    return [p.strip() for p in parts if p and p.strip(" ,")]
+
+
+def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
+    """Read the position statements of ``text`` about ``rooms``.
+
+    Never raises for language it does not understand: such clauses land in ``Reading.unread``.
+    """
+    lex = _lexicon([r.room_type for r in rooms])
+    norm = _fold_spelling(text.lower())
+    for pat, rep in _FOLDS:
+        norm = re.sub(pat, rep, norm)
+    norm = _numbers(norm)
+
+    mentions: list[RoomMention] = []
+
+    def mention(m: re.Match[str]) -> str:
+        ordinal, word, num = m.group(1), m.group(2), m.group(3)
+        kind = _type_of(lex, word)
+        number: int | None = None
+        if num:
+            number = int(num) if num.isdigit() else _ROMAN.get(num)
+        elif ordinal and ordinal not in ("other", "another"):
+            number = _ORDINALS[ordinal]
+        mentions.append(RoomMention(kind, number, m.group(0).strip()))
+        return f" R{len(mentions) - 1} "
+
+    tokens = lex.pattern.sub(mention, norm)
+    tokens = _directions(tokens)
+    tokens = re.sub(r"[ \t]+", " ", tokens)
+
+    # Sentences, then unpunctuated run-ons split where a new room opens a description
+    # ("... size 10*4 feet R3 at D:northwest corner ...").
+    clauses: list[_Clause] = []
+    subject: int | None = None
+    for sentence in _split_sentences(tokens):
+        for piece in _run_on_split(sentence):
+            first = re.search(r"R(\d+)\b", piece)
+            # "Occupying most of the west side, the living room ...": the subject follows a
+            # leading participle phrase, which is about it
+            dangling = re.match(r"\s*(?:[a-z]+ing|located|situated|placed|positioned|set|tucked)\b[^,]*,\s*(?:the\s+|a\s+|an\s+)?R(\d+)\b", piece)
+            if dangling:
+                subject = int(dangling.group(1))
+                clauses.append(_Clause(piece, piece, subject))
+                continue
+            lead = piece[: first.start()] if first else ""
+            if first and _SUBJECT_LEAD.match(lead.strip() + " " if lead.strip() else "") and (
+                _opens_description(piece[first.end():]) or subject is None
+            ):
+                subject = int(first.group(1))
+            elif first and not lead.strip() and subject is None:
+                subject = int(first.group(1))
+            else:
+                # "Measuring about 10x10 ft, the common room is located ...": a room named with
+                # a placing verb after a leading phrase is the subject too
+                later = re.search(
+                    r"(?:^|,\s*|\bthe\s+)R(\d+)\s+(?:is|are)\s+(?:located|situated|positioned|placed|found|in|on|at)\b"
+                    r"|\blocation\s+of\s+(?:the\s+)?R(\d+)", piece
+                )
+                if later:
+                    subject = int(later.group(1) or later.group(2))
+            clauses.append(_Clause(piece, piece, subject))
+
+    statements: list[Statement] = []
+    unread: list[str] = []
+    for clause in clauses:
+        if clause.subject is None:
+            unread.append(_plain(clause.text, mentions))
+            continue
+        found = _read_clause(clause, mentions)
+        if found:
+            statements.extend(found)
+        elif not _is_filler(clause.text):
+            unread.append(_plain(clause.text, mentions))
+    return _resolve(statements, unread, mentions, rooms)
+
+
+#: Words after which a room name continues the clause rather than opening a new description.
+_LINKS = frozenset(
+    "of to with and by between from near beside behind than as or nor the a an its their his her "
+    "into onto toward towards through via is are was were leads opens faces facing overlooks "
+    "adjacent adjoining next nearby connects connected accessed accessible entrance bordered "
+    "neighbored neighboured followed after before above below under over upside downside , "
+    "both all also then while where which that".split()
+)
+
+
+def _run_on_split(sentence: str) -> list[str]:
+    """Split a sentence at rooms that open a new description after a size ("... 10*4 feet R3
+    at ..."), the mark of descriptions written without full stops."""
+    cuts = [
+        m.start(1)
+        for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
+        if m.group(1) not in _LINKS and not m.group(1).startswith("R") and m.group(1) != "the"
+    ]
+    cuts = [c for c in cuts]
+    cuts = [m.start(2) for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
+            if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
+        # "the 11x5 bathroom is ...": a size in front of the room is not the end of a description
+        and not re.search(r"\b(?:the|a|an)\s+[\d.x*'\"]+\s*$", sentence[: m.start(2)])]
+    # a request's list of rooms: "a clinic with a pharmacy on the east side, and a cafe in ..."
+    cuts += [m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?(?:D:\w+\s+)+(?:corner|(?:side|part|end|wing)\s+of\s+the\s+" + _PLACE + r"))", sentence)]
+    cuts = sorted(set(c for c in cuts if c > 0))
+    if not cuts:
+        return [sentence]
+    pieces, start = [], 0
+    for c in cuts:
+        pieces.append(sentence[start:c])
+        start = c
+    pieces.append(sentence[start:])
+    return [p for p in pieces if p.strip()]
+
+
+def _opens_description(rest: str) -> bool:
+    # A room opening a sentence is its subject ("R2 is ...", "R2 resides ...", "R2 D:south
+    # direction"), unless it starts a list or a relation to the previous subject ("R2 and R3 are
+    # to the west", "R2 to the north").
+    return not re.match(r"\s*(?:and|&|,|or|as\s+well|to\s+the|to\s+its|on\s+its|is\s+to\s+(?:the|its)\s+D:\w+\b(?!\s+(?:side\s+|part\s+)?(?:of|from)\b)|are\b)", rest)
+
+
+def _is_filler(text: str) -> bool:
+    return not re.search(r"R\d+|D:|\d", text)
+
+
+def _plain(text: str, mentions: list[RoomMention]) -> str:
+    out = re.sub(r"R(\d+)\b", lambda m: mentions[int(m.group(1))].words, text)
+    return re.sub(r"D:(\w+)", r"\1", out).strip()
+
+
+# -- the grammar of one clause ------------------------------------------------------------------
+
+_ROOMS = r"R\d+(?:\s*(?:,|and|&|as well as|plus)\s*(?:the\s+)?R\d+)*"
+_ROOMSEQ = re.compile(r"R(\d+)")
+_D = r"D:(\w+)"
+_DD = r"D:(\w+)(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?D:(\w+))*"
+_ART = r"(?:\s+(?:the|its|it's|it|his|her|their|a))?"
+
+_SIZE_UNIT = r"(?:'|feet|foot|ft\.?|m|meters?|metres?|mtrs?|\"|inches)?"
+_NUM_RE = r"(\d+(?:\.\d+)?)"
+
+
+def _dirs(m: re.Match[str], text: str) -> list[str]:
+    return re.findall(r"D:(\w+)", text[m.start() : m.end()])
+
+
+def _relation(d: str) -> str:
+    return f"{d}_of"
+
+
+def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement]:
+    text = clause.text
+    assert clause.subject is not None
+    subj = mentions[clause.subject]
+    out: list[Statement] = []
+    used: list[tuple[int, int]] = []
+
+    def free(a: int, b: int) -> bool:
+        return all(b <= u0 or a >= u1 for u0, u1 in used)
+
+    def rooms_in(span: str) -> tuple[RoomMention, ...]:
+        return tuple(mentions[int(k)] for k in _ROOMSEQ.findall(span) if int(k) != clause.subject)
+
+    def add(kind: str, m: re.Match[str], **kw: object) -> None:
+        used.append((m.start(), m.end()))
+        out.append(Statement(subject=subj, kind=kind, text=_plain(m.group(0), mentions), **kw))  # type: ignore[arg-type]
+
+    # 1. "between R1 and R2"
+    for m in re.finditer(r"\b(?:in\s+)?between\s+(?:the\s+)?(" + _ROOMS + ")", text):
+        others = rooms_in(m.group(1))
+        if others and free(m.start(), m.end()):
+            add("relation", m, relation="between" if len(others) > 1 else "next_to", others=others)
+
+    # 2. The subject relative to another room: "D:west of R1", "to the D:north of R1",
+    # "on D:east side of R1", "D:upside of R1", "above R1", "R1's D:north side".
+    pat = (
+        r"(?:\b(?:to|on|at|in|towards|toward)" + _ART + r"\s+)?(?:" + _DD + r")(?:\s+" + _PART + r")?\s+(?:of|from)"
+        + _ART + r"\s+(" + _ROOMS + r")"
+    )
+    for m in re.finditer(pat, text):
+        others = rooms_in(m.group(m.lastindex or 0))
+        if not others or not free(m.start(), m.end()):
+            continue
+        for d in _dirs(m, text[: m.start(m.lastindex or 0)] + " " * (m.end() - m.start(m.lastindex or 0))):
+            if d == "centre":
+                add("relation", m, relation="between", others=others)
+            else:
+                add("relation", m, relation=_relation(d), others=others)
+    for m in re.finditer(r"\b(above|over|upside of|below|beneath|under|underneath|downside of|behind)\s+(?:the\s+)?(" + _ROOMS + ")", text):
+        others = rooms_in(m.group(2))
+        if others and free(m.start(), m.end()):
+            d = "north" if m.group(1) in ("above", "over", "upside of") else "south"
+            if m.group(1) == "behind":
+                continue
+            add("relation", m, relation=_relation(d), others=others)
+    for m in re.finditer(r"\bD:(\w+)\s+(?:of|to)\s+(" + _ROOMS + ")", text):  # "D:east to R1" (loose)
+        others = rooms_in(m.group(2))
+        if others and free(m.start(), m.end()):
+            add("relation", m, relation=_relation(m.group(1)) if m.group(1) != "centre" else "between", others=others)
+
+    # 3. Another room relative to the subject: "with R1 to the D:south", "R1 is to its D:west",
+    # "R1 on its D:right", "to the D:north is R1", "D:north is R1", "R1 D:below" (run-on style).
+    pat_after = (
+        r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|both))*"
+        r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r")?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
+        r"(?:\s+(?:side|end|edge|wall|corner|direction)(?!\s+of\b))?"
+    )
+    for m in re.finditer(pat_after, text):
+        others = rooms_in(m.group(1))
+        if not others or not free(m.start(), m.end()):
+            continue
+        # "R1 D:north D:corner" style clauses (a room then a position of the plan) are positions
+        # of the plan when followed by "of the house": the negative look-ahead handled "of".
+        for d in _dirs(m, text):
+            if d == "centre":
+                continue
+            for o in others:
+                out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
+        used.append((m.start(), m.end()))
+    pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
+    for m in re.finditer(pat_before, text):
+        others = rooms_in(m.group(m.lastindex or 0))
+        if not others or not free(m.start(), m.end()):
+            continue
+        for d in _dirs(m, text):
+            if d != "centre":
+                for o in others:
+                    out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
+        used.append((m.start(), m.end()))
+
+    # 4. Exterior walls: "D:south wall is exterior", "exterior to the D:north, D:east", "outside
+    # wall(s) to the D:east and D:west", "house exterior to the D:west".
+    for m in re.finditer(r"(?:" + _DD + r")\s+(?:wall|walls|side)\s+(?:is|are)\s+(?:an?\s+)?(?:the\s+)?(?:exterior|outside|external)", text):
+        if free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                add("exterior", m, direction=d)
+    for m in re.finditer(r"(?:to\s+the\s+)?(?:" + _DD + r")\s+(?:is|are)\s+(?:the\s+)?(?:house\s+|unit\s+|building\s+)?(?:exterior|outside)", text):
+        if free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                if d != "centre":
+                    add("exterior", m, direction=d)
+    for m in re.finditer(r"(?:exterior|outside|external)(?:\s+walls?)?(?:\s+(?:is|are|on|to|at|of|both|the))*\s+(?:" + _DD + r")", text):
+        if free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                if d != "centre":
+                    add("exterior", m, direction=d)
+
+    # 5. Other adjacency words: next to, near, adjacent, beside, across from, opposite, facing.
+    adjacency = (
+        r"\b(next\s+to|nearby|near\s+to|near|adjacent\s+to|adjacent|adjoining|adjoined\s+by|adjoins|beside|by\s+the\s+side\s+of|"
+        r"bordered\s+by|borders|neighbou?red\s+by|shares\s+(?:a\s+)?walls?\s+with|connects?\s+(?:to|with)|connected\s+to|"
+        r"attached\s+to|access(?:ed|ible)?\s+(?:from|through|via)|opens?\s+(?:in)?to|entrance\s+from|accessible\s+from|"
+        r"leads?\s+(?:in)?to|surrounded\s+by|joined\s+to|joins|touches|meets|along\s+with|after|en\s*suite\s+to|"
+        r"across\s+from|opposite(?:\s+(?:to|of))?|facing|faces|in\s+front\s+of|overlooks?)"
+        r"(?:\s+(?:the|both|all|a|an))*\s+(" + _ROOMS + ")"
+    )
+    for m in re.finditer(adjacency, text):
+        others = rooms_in(m.group(2))
+        if not others or not free(m.start(), m.end()):
+            continue
+        word = m.group(1)
+        across = bool(re.match(r"across|opposite|facing|faces|in\s+front|overlook", word))
+        add("relation", m, relation="across_from" if across else "next_to", others=others)
+
+    # 6. Positions of the subject in the plan: whatever compass word is left.
+    rest = list(text)
+    for a, b in used:
+        rest[a:b] = " " * (b - a)
+    rest_text = "".join(rest)
+    # "D:north D:centre" / "D:centre of the D:east portion": a side and its middle
+    for m in re.finditer(r"D:(\w+)", rest_text):
+        d = m.group(1)
+        before = rest_text[max(0, m.start() - 40) : m.start()]
+        after = rest_text[m.end() : m.end() + 40]
+        # facing/entrance words say where a door or window looks, which is the room's side too;
+        # "D:south wall" alone (no exterior word) is a wall of the room, not its position.
+        if re.match(r"\s+(?:wall|walls|door|entrance|entry|window)\b", after) and not re.match(r"\s+wall\s+of\s+(?:the\s+)?" + _PLACE, after):
+            continue
+        if re.search(r"\b(?:door|entry|entrance|window|opening)\s+(?:\w+\s+){0,3}$", before):
+            continue
+        if re.match(r"\s+(?:of|from)\s+(?:the\s+)?R\d+", after):  # relation left over (e.g. to itself)
+            continue
+        # dimensions ("the north and south side length is 3 feet") and doors are not positions
+        if re.match(r"(?:\s*(?:and|,|&)\s*D:\w+)*\s+(?:sides?\s+)?(?:length|lenght|width|measures?|dimension)", after):
+            continue
+        if re.match(r"\s+(?:of|from)\s+(?:the\s+)?(?:main\s+|front\s+)?(?:door|entrance|entry|doorway)", after):
+            continue
+        if re.match(r"(?:\s*(?:and|,)\s*D:\w+)*\s+(?:facing\s+)?(?:front\s+|main\s+)?(?:door|entrance|entry)", after):
+            continue
+        out.append(Statement(subject=subj, kind="position", direction=d, text=_plain(text[max(0, m.start() - 20) : m.end() + 25], mentions)))
+
+    # 7. Sizes.
+    out.extend(_sizes(text, subj, mentions))
+    return _merge_positions(out)
+
+
+def _merge_positions(found: list[Statement]) -> list[Statement]:
+    """Combine a clause's bare position words: "D:north D:east" → northeast; "D:centre" with a
+    side keeps the side; the same direction twice is said once."""
+    positions = [s for s in found if s.kind == "position"]
+    if any(s.direction != "centre" for s in positions):
+        # "the north centre", "centre of the east side": the middle of a side is that side
+        found = [s for s in found if not (s.kind == "position" and s.direction == "centre")]
+        positions = [s for s in found if s.kind == "position"]
+    if len(positions) < 2:
+        return found
+    dirs = [s.direction for s in positions]
+    kept: list[Statement] = []
+    seen: set[str] = set()
+    merged: list[str] = []
+    i = 0
+    while i < len(dirs):
+        d = dirs[i]
+        if i + 1 < len(dirs):
+            combined = _combine(d, dirs[i + 1])
+            if combined is not None and positions[i + 1].text.find(positions[i].text[-10:]) >= -1:
+                merged.append(combined)
+                i += 2
+                continue
+        merged.append(d)  # type: ignore[arg-type]
+        i += 1
+    for d, s in zip(merged, positions):
+        if d in seen:
+            continue
+        seen.add(d)
+        kept.append(Statement(subject=s.subject, kind="position", direction=d, text=s.text))
+    return [s for s in found if s.kind != "position"] + kept
+
+
+def _combine(a: str | None, b: str | None) -> str | None:
+    if a in ("north", "south") and b in ("east", "west"):
+        return f"{a}{b}"
+    if a in ("east", "west") and b in ("north", "south"):
+        return f"{b}{a}"
+    return None
+
+
+def _unit(word: str | None, text: str) -> float:
+    w = (word or "").strip().lower()
+    if w.startswith("m") and not w.startswith("mm"):
+        return 1.0
+    if re.search(r"\b(?:metres?|meters?|m2|m²|sq\.?\s*m|square\s+met)", text):
+        return 1.0
+    return _FEET
+
+
+def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[Statement]:
+    out: list[Statement] = []
+    spans: list[tuple[int, int]] = []
+    dim = (
+        _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:(wide|width|in\s+width|long|length|in\s+length|deep|depth|in\s+depth|tall|high)\s*)?"
+        r"(?:x|by|\*|:|×|and)\s*(?:a\s+)?" + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*"
+        r"(?:(wide|width|in\s+width|long|length|in\s+length|deep|depth|in\s+depth|tall|high)\b)?"
+    )
+    for m in re.finditer(dim, text):
+        a, b = float(m.group(1)), float(m.group(4))
+        if a <= 0 or b <= 0 or a > 300 or b > 300:
+            continue
+        unit = _unit(m.group(2) or m.group(5), text)
+        first, second = (m.group(3) or "").replace("in ", "").strip(), (m.group(6) or "").replace("in ", "").strip()
+        oriented = first in ("wide", "width") or second in ("deep", "depth", "tall", "high")
+        swapped = first in ("deep", "depth", "tall", "high", "long", "length") and second in ("wide", "width")
+        w, d = (b, a) if swapped else (a, b)
+        spans.append((m.start(), m.end()))
+        out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=oriented or swapped, text=_plain(m.group(0), mentions)))
+    if not out:
+        # "8 feet in width and 6 feet in length", "10 feet width and 12 feet length"
+        pair = re.search(_NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long)\b.{0,30}?" + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long|depth|deep)\b", text)
+        if pair:
+            a, b = float(pair.group(1)), float(pair.group(4))
+            unit = _unit(pair.group(2) or pair.group(5), text)
+            w, d = (a, b) if pair.group(3).startswith("wid") else (b, a)
+            spans.append((pair.start(), pair.end()))
+            out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=True, text=_plain(pair.group(0), mentions)))
+    for m in re.finditer(_NUM_RE + r"\s*(?:square|sq\.?|sqrt|sqr)\s*(feet|foot|ft|meters?|metres?|m)\b|" + _NUM_RE + r"\s*(sqft|sq\.?ft|ft2|ft²|m2|m²|sqm)\b", text):
+        if any(not (m.end() <= a or m.start() >= b) for a, b in spans):
+            continue
+        value = float(m.group(1) or m.group(3))
+        unit_word = m.group(2) or m.group(4)
+        scale = 1.0 if unit_word.startswith("m") or unit_word in ("m2", "m²", "sqm") else _FEET**2
+        if value > 0:
+            out.append(Statement(subject=subj, kind="size", area=value * scale, text=_plain(m.group(0), mentions)))
+    if not out:
+        said = re.search(r"\barea\s+(?:is|of)\s+(?:about\s+|approximately\s+|around\s+)?" + _NUM_RE, text)
+        if said and float(said.group(1)) > 0:
+            out.append(Statement(subject=subj, kind="size", area=float(said.group(1)) * _FEET**2, text=_plain(said.group(0), mentions)))
+    return out
+
+
+# -- resolving mentions to rooms ----------------------------------------------------------------
+
+
+def _resolve(
+    statements: list[Statement], unread: list[str], mentions: list[RoomMention], rooms: Sequence[KnownRoom]
+) -> Reading:
+    """Map each mention (type, number) to a known room id.
+
+    Numbered mentions of a type take the type's rooms in order; ordinals of "bedroom" count the
+    master bedroom first ("the second bedroom" is the first common room); an unnumbered mention
+    of a type with several rooms is the first of them not otherwise named. Callers that can tell
+    same-type rooms apart by other evidence (areas, adjacency) may re-map
+    (:func:`mansion.planning.spatial_seeds.match_rooms`).
+    """
+    by_type: dict[str, list[str]] = {}
+    for r in rooms:
+        by_type.setdefault(r.room_type, []).append(r.id)
+    keys: list[tuple[str, int | None]] = []
+    for m in mentions:
+        key = _canonical(m, by_type)
+        if key not in keys:
+            keys.append(key)
+    resolved: dict[tuple[str, int | None], str] = {}
+    for kind, ids in by_type.items():
+        named = sorted({n for k, n in keys if k == kind and n is not None})
+        unnamed = (kind, None) in keys
+        # numbers in the text may skip ("bathroom 2" only) or start at 0: rank them
+        taken: set[str] = set()
+        for rank, n in enumerate(named):
+            if rank < len(ids):
+                resolved[(kind, n)] = ids[rank]
+                taken.add(ids[rank])
+        if unnamed:
+            rest = [i for i in ids if i not in taken] or ids
+            resolved[(kind, None)] = rest[0]
+    reading = Reading(unread=unread, resolved=resolved)
+
+    def canon(m: RoomMention) -> RoomMention:
+        kind, n = _canonical(m, by_type)
+        return RoomMention(kind, n, m.words)
+
+    for s in statements:
+        subj = canon(s.subject)
+        rid = resolved.get(subj.key)
+        if rid is None:
+            reading.unresolved.append((s, f"no room of this plan is called {s.subject.words!r}"))
+            continue
+        others = tuple(canon(o) for o in s.others)
+        missing = [o.words for o in others if o.key not in resolved]
+        if missing:
+            reading.unresolved.append((s, f"no room of this plan is called {', '.join(repr(w) for w in missing)}"))
+            continue
+        if any(resolved[o.key] == rid for o in others):
+            continue  # a room relative to itself: "the master ... bathroom of the master" mixups
+        reading.statements.setdefault(rid, []).append(
+            Statement(
+                subject=subj, kind=s.kind, text=s.text, direction=s.direction, relation=s.relation,
+                others=others, width=s.width, depth=s.depth, area=s.area, oriented=s.oriented,
+            )
+        )
+    return reading
+
+
+def _canonical(m: RoomMention, by_type: dict[str, list[str]]) -> tuple[str, int | None]:
+    """A mention's (type, number) among the known types: "bedroom"s become the master or common
+    rooms, "second bedroom" counts the master first."""
+    kind, n = m.room_type, m.number
+    if kind == "bedroom":
+        if "common_room" in by_type and "master_room" in by_type:
+            if n is not None and re.search(r"\b(second|third|fourth|fifth|2nd|3rd|4th)\b", m.words):
+                return ("common_room", n - 1 if n > 1 else None)
+            if n is None and re.search(r"\b(other|another)\b", m.words):
+                return ("common_room", None)
+            return ("common_room", n)
+        if "master_room" in by_type:
+            return ("master_room", None if len(by_type["master_room"]) == 1 else n)
+        if "common_room" in by_type:
+            return ("common_room", n)
+        if "bedroom" in by_type:
+            return ("bedroom", n)
+    if kind == "master_room" and len(by_type.get("master_room", [])) == 1:
+        return (kind, None)
+    if n is not None and len(by_type.get(kind, [])) <= 1:
+        n = None  # "bathroom 1" when there is one bathroom
+    return (kind, n)
+

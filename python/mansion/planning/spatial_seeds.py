@@ -1,0 +1,531 @@
+"""Seed points from what a description says about where rooms are.
+
+:func:`place_seeds` turns a :class:`~mansion.planning.spatial_language.Reading` into one seed per
+room inside a free region (a boolean grid), by a small constraint solve:
+
+- a compass *position* is a target for the room's centre within the free region's extent, set in
+  from the named walls by half the room's size (its area, shaped by a stated width and depth), so
+  a room "in the northeast corner" starts where a room of its size would sit in that corner;
+- an *exterior* wall is a weaker pull toward that side;
+- a *relation* is an ordering between two seeds ("the kitchen is west of the living room": the
+  kitchen's x is at least half their widths left of the living room's), "between" a pull toward
+  the midpoint, "next to"/"across from" and the plan's adjacency a pull until the two rooms'
+  boxes touch;
+- every pair of rooms pushes apart where their boxes would overlap, and a room's box is kept
+  inside the free region (the share of its box outside is a cost).
+
+The solve is coordinate descent over the free cells: each room in turn moves to the cell of least
+cost given the others, a few sweeps. Every seed is a free cell's centre, so seeds always land in
+the free region; a room the text says nothing about is placed by its relations and adjacency, or
+else where its box fits best away from the others. The :class:`SeedReport` lists the statements
+used, whether the final seeds honour them, and what could not be read.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from mansion.exceptions import InvalidInputError
+from mansion.planning.spatial_language import DIRECTIONS, Reading, Statement
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+__all__ = [
+    "DISAGREEMENT_WEIGHTS", "FreeGrid", "SeedReport", "SeedRoom", "SeedWeights", "disagreement_parts",
+    "layout_disagreement", "match_rooms", "place_seeds",
+]
+
+
+@dataclass(frozen=True)
+class SeedRoom:
+    """A room to seed: id, type and target area (m²)."""
+
+    id: str
+    room_type: str
+    area: float
+
+
+@dataclass(frozen=True)
+class FreeGrid:
+    """Where seeds may go: ``mask[r, c]`` is the cell whose centre is
+    ``(origin[0] + (c + 0.5) * cell, origin[1] + (r + 0.5) * cell)`` (rows go up, y up)."""
+
+    mask: npt.NDArray[np.bool_]
+    origin: tuple[float, float] = (0.0, 0.0)
+    cell: float = 1.0
+
+    def __post_init__(self) -> None:
+        if self.mask.ndim != 2 or not self.mask.any():
+            raise InvalidInputError("the free region for seeds must be a 2-D grid with at least one free cell")
+        if not self.cell > 0:
+            raise InvalidInputError(f"cell size must be positive, got {self.cell}")
+
+    def centre_of(self, r: int, c: int) -> tuple[float, float]:
+        return (self.origin[0] + (c + 0.5) * self.cell, self.origin[1] + (r + 0.5) * self.cell)
+
+    def contains(self, point: tuple[float, float]) -> bool:
+        c = math.floor((point[0] - self.origin[0]) / self.cell)
+        r = math.floor((point[1] - self.origin[1]) / self.cell)
+        return 0 <= r < self.mask.shape[0] and 0 <= c < self.mask.shape[1] and bool(self.mask[r, c])
+
+
+@dataclass(frozen=True)
+class SeedWeights:
+    """Weights of the seed solve's terms (all costs are in units of the region's size)."""
+
+    position: float = 4.0
+    centre: float = 1.0
+    exterior: float = 1.0
+    relation: float = 4.0
+    between: float = 1.0
+    adjacency: float = 1.0
+    next_to: float = 1.0
+    overlap: float = 2.0
+    fit: float = 2.0
+    #: how far apart (in half-sizes) a relation wants two rooms: 1.0 = boxes just touching
+    gap: float = 0.6
+    sweeps: int = 8
+    hub_shrink: float = 0.5
+    #: a position's target is this many half-sizes in from the named wall, at most max_inset of
+    #: the extent
+    inset: float = 1.0
+    max_inset: float = 1 / 3
+    side_middle: float = 0.5
+    #: seed the hub (largest room) in what the others leave rather than by its own words
+    hub_leftover: bool = True
+
+
+@dataclass
+class SeedReport:
+    """What the seeds are based on."""
+
+    #: (room id, statement, honoured by the final seeds)
+    used: list[tuple[str, Statement, bool]] = field(default_factory=list)
+    #: What could not be used, with the reason.
+    ignored: list[str] = field(default_factory=list)
+    #: Rooms placed without any statement of their own (by relations of others, adjacency, fit).
+    defaults: list[str] = field(default_factory=list)
+
+    @property
+    def honoured(self) -> list[tuple[str, Statement]]:
+        return [(r, s) for r, s, ok in self.used if ok]
+
+    @property
+    def unmet(self) -> list[tuple[str, Statement]]:
+        return [(r, s) for r, s, ok in self.used if not ok]
+
+
+def _half_sizes(room: SeedRoom, statements: Sequence[Statement], cell: float) -> tuple[float, float]:
+    """Half extents (in cells) of a room's box: its area, shaped by a stated width and depth when
+    the text said which way they run; square otherwise."""
+    area = max(room.area / (cell * cell), 1.0)
+    aspect = 1.0
+    for s in statements:
+        if s.kind == "size" and s.width and s.depth and s.oriented:
+            aspect = min(max(s.width / s.depth, 1 / 3), 3.0)
+            break
+    w = math.sqrt(area * aspect)
+    return (w / 2, area / w / 2)
+
+
+def _box_sums(mask: npt.NDArray[np.bool_], hx: float, hy: float) -> npt.NDArray[np.float64]:
+    """Share of the box of half-size (hx, hy) centred on each cell that lies outside the mask."""
+    import numpy as np
+
+    rows, cols = mask.shape
+    kx, ky = max(int(round(hx)), 0), max(int(round(hy)), 0)
+    pad = np.zeros((rows + 2 * ky, cols + 2 * kx), dtype=np.float64)
+    pad[ky : ky + rows, kx : kx + cols] = mask
+    s = np.zeros((pad.shape[0] + 1, pad.shape[1] + 1))
+    s[1:, 1:] = pad.cumsum(0).cumsum(1)
+    h, w = 2 * ky + 1, 2 * kx + 1
+    inside = s[h:, w:] - s[:-h, w:] - s[h:, :-w] + s[:-h, :-w]
+    return 1.0 - inside[:rows, :cols] / (h * w)
+
+
+def place_seeds(
+    reading: Reading,
+    rooms: Sequence[SeedRoom],
+    free: FreeGrid,
+    adjacency: Iterable[tuple[str, str]] = (),
+    *,
+    weights: SeedWeights | None = None,
+) -> tuple[dict[str, tuple[float, float]], SeedReport]:
+    """One seed per room (room id → point in ``free``'s frame), and the report.
+
+    Never fails for want of statements: a room the text does not place gets a reasoned default.
+    """
+    import numpy as np
+
+    if not rooms:
+        raise InvalidInputError("no rooms to seed")
+    w = weights or SeedWeights()
+    ids = [r.id for r in rooms]
+    index = {rid: k for k, rid in enumerate(ids)}
+    mask = np.asarray(free.mask, dtype=bool)
+    rr, cc = np.nonzero(mask)
+    # candidate coordinates in cells (cell centres), frame of the grid
+    X = cc + 0.5
+    Y = rr + 0.5
+    x0, x1 = float(cc.min()), float(cc.max() + 1)
+    y0, y1 = float(rr.min()), float(rr.max() + 1)
+    scale = max(x1 - x0, y1 - y0)
+    cx, cy = float(X.mean()), float(Y.mean())
+    report = SeedReport()
+
+    about = {rid: reading.about(rid) for rid in ids}
+    half = [_half_sizes(r, about[r.id], free.cell) for r in rooms]
+    # The hub (the largest room, a plan's living room or lobby) wraps around the others: its box
+    # is a poor stand-in for its shape, so it keeps a smaller one in the pairwise terms.
+    hub = max(range(len(rooms)), key=lambda k: rooms[k].area)
+    half[hub] = (half[hub][0] * w.hub_shrink, half[hub][1] * w.hub_shrink)
+    n = len(rooms)
+
+    # unary costs: positions, exterior walls, fit
+    unary = np.zeros((n, X.size))
+    for k, room in enumerate(rooms):
+        hx, hy = half[k]
+        unary[k] += w.fit * _box_sums(mask, hx, hy)[rr, cc]
+        positions = [s for s in about[room.id] if s.kind in ("position", "exterior")]
+        for s in positions:
+            assert s.direction is not None
+            dx, dy = DIRECTIONS[s.direction]
+            weight = w.exterior if s.kind == "exterior" else w.position
+            if s.direction == "centre":
+                unary[k] += w.centre * ((X - cx) ** 2 + (Y - cy) ** 2) / scale**2
+                continue
+            # the target: the named wall(s), moved in by the room's half size (at most a third
+            # of the extent: a big room "in the north" still has its centre in the north third)
+            inset_x = min(hx * w.inset, (x1 - x0) * w.max_inset)
+            inset_y = min(hy * w.inset, (y1 - y0) * w.max_inset)
+            tx = x1 - inset_x if dx > 0 else x0 + inset_x if dx < 0 else (x0 + x1) / 2
+            ty = y1 - inset_y if dy > 0 else y0 + inset_y if dy < 0 else (y0 + y1) / 2
+            # a side says nothing of the other axis: a weak pull to the middle of that side
+            unary[k] += (weight if dx else w.side_middle) * ((X - tx) / scale) ** 2
+            unary[k] += (weight if dy else w.side_middle) * ((Y - ty) / scale) ** 2
+        if not about[room.id]:
+            report.defaults.append(room.id)
+
+    # pairwise terms: (i, j, kind, payload)
+    pairs: list[tuple[int, int, str, float, tuple[int, int]]] = []
+    for rid in ids:
+        for s in about[rid]:
+            if s.kind != "relation":
+                continue
+            others = [reading.resolved.get(o.key) for o in s.others]
+            js = [index[o] for o in others if o in index]
+            if not js:
+                continue
+            i = index[rid]
+            if s.relation == "between" and len(js) >= 2:
+                pairs.append((i, js[0], "between", w.between, (js[0], js[1])))
+            elif s.relation in ("next_to", "between", "across_from"):
+                for j in js:
+                    pairs.append((i, j, "touch", w.next_to * (0.5 if s.relation == "across_from" else 1.0), (0, 0)))
+            elif s.relation and s.relation.endswith("_of"):
+                d = DIRECTIONS.get(s.relation[:-3])
+                if d is None:
+                    continue
+                for j in js:
+                    pairs.append((i, j, "order", w.relation, d))
+    for a, b in adjacency:
+        if a in index and b in index and a != b:
+            pairs.append((index[a], index[b], "touch", w.adjacency, (0, 0)))
+
+    pos = np.argmin(unary, axis=1)  # start: each room where its own words put it
+
+    def cost_of(k: int, cand: npt.NDArray[np.int64] | None = None) -> npt.NDArray[np.float64]:
+        px = X if cand is None else X[cand]
+        py = Y if cand is None else Y[cand]
+        total = unary[k].copy() if cand is None else unary[k][cand]
+        hx, hy = half[k]
+        for j in range(n):
+            if j == k:
+                continue
+            ox = np.maximum(0.0, hx + half[j][0] - np.abs(px - X[pos[j]]))
+            oy = np.maximum(0.0, hy + half[j][1] - np.abs(py - Y[pos[j]]))
+            total = total + w.overlap * ox * oy / min(hx * hy, half[j][0] * half[j][1]) / 4
+        for i, j, kind, weight, payload in pairs:
+            if k not in (i, j) and not (kind == "between" and k in payload):
+                continue
+            if kind == "between":
+                a, b = payload
+                pts = {i: (px, py) if k == i else (X[pos[i]], Y[pos[i]])}
+                for m in (a, b):
+                    pts[m] = (px, py) if k == m else (X[pos[m]], Y[pos[m]])
+                mx = (pts[a][0] + pts[b][0]) / 2
+                my = (pts[a][1] + pts[b][1]) / 2
+                total = total + weight * ((pts[i][0] - mx) ** 2 + (pts[i][1] - my) ** 2) / scale**2
+                continue
+            other = j if k == i else i
+            ox_, oy_ = X[pos[other]], Y[pos[other]]
+            # displacement of i relative to j
+            dx = (px - ox_) if k == i else (ox_ - px)
+            dy = (py - oy_) if k == i else (oy_ - py)
+            sx = half[i][0] + half[j][0]
+            sy = half[i][1] + half[j][1]
+            if kind == "touch":
+                gx = np.maximum(0.0, np.abs(dx) - sx)
+                gy = np.maximum(0.0, np.abs(dy) - sy)
+                total = total + weight * (gx**2 + gy**2) / scale**2
+            else:
+                ux, uy = payload
+                if ux:
+                    short = np.maximum(0.0, w.gap * sx - ux * dx)
+                    total = total + weight * (short / scale) ** 2
+                else:
+                    # due north/south: the two should also overlap in x
+                    total = total + 0.25 * weight * (np.maximum(0.0, np.abs(dx) - sx) / scale) ** 2
+                if uy:
+                    short = np.maximum(0.0, w.gap * sy - uy * dy)
+                    total = total + weight * (short / scale) ** 2
+                else:
+                    total = total + 0.25 * weight * (np.maximum(0.0, np.abs(dy) - sy) / scale) ** 2
+        return total
+
+    order = sorted(range(n), key=lambda k: -rooms[k].area)
+    for _ in range(w.sweeps):
+        moved = False
+        for k in order:
+            best = int(np.argmin(cost_of(k)))
+            if best != pos[k]:
+                pos[k] = best
+                moved = True
+        if not moved:
+            break
+
+    if w.hub_leftover:
+        # The hub takes what the other rooms leave: its seed is the free cell nearest the centre
+        # of the cells outside every other room's box (the hub's own words shift it the same way
+        # as any room's, through the unary cost, as a tie-break).
+        covered = np.zeros(X.size, dtype=bool)
+        for j in range(n):
+            if j == hub:
+                continue
+            hx, hy = _half_sizes(rooms[j], about[rooms[j].id], free.cell)
+            covered |= (np.abs(X - X[pos[j]]) < hx) & (np.abs(Y - Y[pos[j]]) < hy)
+        if (~covered).any():
+            lx, ly = X[~covered].mean(), Y[~covered].mean()
+            d2 = ((X - lx) ** 2 + (Y - ly) ** 2) / scale**2 + np.where(covered, 1.0, 0.0)
+            pos[hub] = int(np.argmin(d2 + 0.1 * unary[hub]))
+
+    seeds = {
+        rid: (free.origin[0] + float(X[pos[k]]) * free.cell, free.origin[1] + float(Y[pos[k]]) * free.cell)
+        for k, rid in enumerate(ids)
+    }
+    # the report: which statements the seeds honour
+    ext = (x0, x1, y0, y1)
+    for rid in ids:
+        for s in about[rid]:
+            report.used.append((rid, s, _honoured(s, rid, seeds, reading, free, ext)))
+    for s, why in reading.unresolved:
+        report.ignored.append(f"{s.text!r}: {why}")
+    for text in reading.unread:
+        report.ignored.append(f"{text!r}: no position, relation or size read")
+    return seeds, report
+
+
+def _honoured(
+    s: Statement,
+    rid: str,
+    seeds: dict[str, tuple[float, float]],
+    reading: Reading,
+    free: FreeGrid,
+    ext: tuple[float, float, float, float],
+) -> bool:
+    """Whether a seed agrees with a statement: a position is in the right third of the region's
+    extent; an ordering has the seeds in that order; sizes and adjacency are the solver's job."""
+    x, y = seeds[rid]
+    gx0, gx1 = free.origin[0] + ext[0] * free.cell, free.origin[0] + ext[1] * free.cell
+    gy0, gy1 = free.origin[1] + ext[2] * free.cell, free.origin[1] + ext[3] * free.cell
+    fx = (x - gx0) / max(gx1 - gx0, 1e-9)
+    fy = (y - gy0) / max(gy1 - gy0, 1e-9)
+    if s.kind in ("position", "exterior") and s.direction:
+        dx, dy = DIRECTIONS[s.direction]
+        if s.direction == "centre":
+            return 0.2 <= fx <= 0.8 and 0.2 <= fy <= 0.8
+        ok = True
+        if dx:
+            ok &= fx >= 0.5 if dx > 0 else fx <= 0.5
+        if dy:
+            ok &= fy >= 0.5 if dy > 0 else fy <= 0.5
+        return bool(ok)
+    if s.kind == "relation" and s.relation and s.relation.endswith("_of"):
+        d = DIRECTIONS.get(s.relation[:-3])
+        others = [reading.resolved.get(o.key) for o in s.others]
+        if d is None:
+            return True
+        for o in others:
+            if o not in seeds:
+                continue
+            ox, oy = seeds[o]
+            if (d[0] and (x - ox) * d[0] <= 0) or (d[1] and (y - oy) * d[1] <= 0):
+                return False
+        return True
+    return True
+
+
+def match_rooms(
+    reading: Reading, rooms: Sequence[SeedRoom], adjacency: Iterable[tuple[str, str]] = ()
+) -> Reading:
+    """Re-map same-type rooms ("common room 1" / "common room 2") to the room ids whose areas and
+    adjacency agree best with what the text says about them (stated sizes, rooms named next to
+    them). The text's numbering says nothing about which id is which; this only permutes rooms of
+    one type, so nothing is invented."""
+    by_type: dict[str, list[str]] = {}
+    area = {r.id: r.area for r in rooms}
+    for r in rooms:
+        by_type.setdefault(r.room_type, []).append(r.id)
+    adj = {frozenset(p) for p in adjacency}
+    resolved = dict(reading.resolved)
+    statements = dict(reading.statements)
+    for kind, ids in by_type.items():
+        keys = [k for k, v in resolved.items() if v in ids and k[0] == kind]
+        named = sorted({resolved[k] for k in keys})
+        if len(ids) < 2 or not named or len(ids) > 5:
+            continue
+
+        def score(perm: dict[str, str]) -> float:
+            total = 0.0
+            stated: dict[str, float] = {}
+            for old in named:
+                for s in statements.get(old, []):
+                    if s.kind == "size" and s.area:
+                        stated.setdefault(old, s.area)
+                    elif s.kind == "size" and s.width and s.depth:
+                        stated.setdefault(old, s.width * s.depth)
+            if len(stated) >= 2:
+                mean_s = sum(stated.values()) / len(stated)
+                mean_a = sum(area[perm[o]] for o in stated) / len(stated)
+                for o, v in stated.items():
+                    total -= abs(math.log(v / mean_s) - math.log(area[perm[o]] / mean_a))
+            for old in named:
+                for s in statements.get(old, []):
+                    for m in s.others:
+                        named_other = resolved.get(m.key)
+                        if named_other is None:
+                            continue
+                        total += 0.5 if frozenset((perm[old], perm.get(named_other, named_other))) in adj else 0.0
+            # statements by others naming these rooms
+            for rid, ss in statements.items():
+                if rid in named:
+                    continue
+                for s in ss:
+                    for m in s.others:
+                        ref = resolved.get(m.key)
+                        if ref is not None and ref in perm:
+                            total += 0.5 if frozenset((rid, perm[ref])) in adj else 0.0
+            return total
+
+        best: tuple[float, dict[str, str]] | None = None
+        for targets in itertools.permutations(ids, len(named)):
+            perm = dict(zip(named, targets))
+            sc = score(perm)
+            if best is None or sc > best[0] + 1e-9:
+                best = (sc, perm)
+        assert best is not None
+        perm = best[1]
+        if all(k == v for k, v in perm.items()):
+            continue
+        for k in keys:
+            resolved[k] = perm[resolved[k]]
+        moved = {perm[o]: statements.pop(o) for o in named if o in statements}
+        statements.update(moved)
+    return Reading(statements=statements, unread=list(reading.unread), unresolved=list(reading.unresolved), resolved=resolved)
+
+
+#: Weights of :func:`layout_disagreement`'s parts.
+DISAGREEMENT_WEIGHTS: dict[str, float] = {
+    "missing": 5.0, "area": 1.0, "position": 1.0, "exterior": 0.5, "centre": 0.5, "relation": 1.0, "adjacency": 0.5,
+}
+
+
+def layout_disagreement(
+    reading: Reading,
+    rooms: Sequence[SeedRoom],
+    free: FreeGrid,
+    adjacency: Iterable[tuple[str, str]],
+    grid: Any,
+    weights: dict[str, float] | None = None,
+) -> float:
+    """How far a solved floor (a :class:`mansion.models.LabelGrid`) is from what the text says:
+    each room said to be at a side or corner should reach that edge of the free region, a room
+    said to be north of another should have its centroid north of it, each room should have its
+    target area and touch its adjacent rooms. Lower is better; 0 is full agreement."""
+    w = weights or DISAGREEMENT_WEIGHTS
+    return sum(w.get(k, 0.0) * v for k, v in disagreement_parts(reading, rooms, free, adjacency, grid).items())
+
+
+def disagreement_parts(
+    reading: Reading,
+    rooms: Sequence[SeedRoom],
+    free: FreeGrid,
+    adjacency: Iterable[tuple[str, str]],
+    grid: Any,
+) -> dict[str, float]:
+    """The parts of :func:`layout_disagreement`, unweighted."""
+    import numpy as np
+
+    labels = grid.array()
+    cell = grid.cell_size
+    ids = list(grid.ids)
+    mask = np.asarray(free.mask, dtype=bool)
+    rr, cc = np.nonzero(mask)
+    fx0 = free.origin[0] + cc.min() * free.cell
+    fx1 = free.origin[0] + (cc.max() + 1) * free.cell
+    fy0 = free.origin[1] + rr.min() * free.cell
+    fy1 = free.origin[1] + (rr.max() + 1) * free.cell
+    scale = max(fx1 - fx0, fy1 - fy0)
+    boxes: dict[str, tuple[float, float, float, float, float, float, float]] = {}
+    for k, rid in enumerate(ids):
+        r, c = np.nonzero(labels == k)
+        if r.size == 0:
+            continue
+        xs = grid.origin[0] + (c + 0.5) * cell
+        ys = grid.origin[1] + (r + 0.5) * cell
+        boxes[rid] = (
+            float(xs.mean()), float(ys.mean()), float(xs.min() - cell / 2), float(xs.max() + cell / 2),
+            float(ys.min() - cell / 2), float(ys.max() + cell / 2), float(r.size * cell * cell),
+        )
+    parts = dict.fromkeys(("missing", "area", "position", "exterior", "centre", "relation", "adjacency"), 0.0)
+    for room in rooms:
+        if room.id not in boxes:
+            parts["missing"] += 1.0
+            continue
+        cx, cy, bx0, bx1, by0, by1, area = boxes[room.id]
+        parts["area"] += abs(area - room.area) / max(room.area, 1e-9)
+        for s in reading.about(room.id):
+            if s.kind in ("position", "exterior") and s.direction:
+                dx, dy = DIRECTIONS[s.direction]
+                if s.direction == "centre":
+                    parts["centre"] += math.hypot(cx - (fx0 + fx1) / 2, cy - (fy0 + fy1) / 2) / scale
+                    continue
+                if dx:
+                    parts[s.kind] += ((fx1 - bx1) if dx > 0 else (bx0 - fx0)) / scale
+                if dy:
+                    parts[s.kind] += ((fy1 - by1) if dy > 0 else (by0 - fy0)) / scale
+            elif s.kind == "relation" and s.relation and s.relation.endswith("_of"):
+                d = DIRECTIONS.get(s.relation[:-3])
+                if d is None:
+                    continue
+                for o in s.others:
+                    other = reading.resolved.get(o.key)
+                    if other not in boxes:
+                        continue
+                    ox, oy = boxes[other][:2]
+                    parts["relation"] += max(0.0, -((cx - ox) * d[0] + (cy - oy) * d[1])) / scale
+    # adjacency: rooms that should share a wall and do not
+    for a, b in adjacency:
+        if a in ids and b in ids:
+            ka, kb = ids.index(a), ids.index(b)
+            A = labels == ka
+            B = labels == kb
+            touch = (A[:, :-1] & B[:, 1:]).any() or (B[:, :-1] & A[:, 1:]).any() or (A[:-1] & B[1:]).any() or (B[:-1] & A[1:]).any()
+            parts["adjacency"] += 0.0 if touch else 1.0
+    return parts
