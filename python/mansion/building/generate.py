@@ -38,7 +38,8 @@ from mansion.exceptions import InvalidInputError
 from mansion.floorplan import EnergyWeights
 from mansion.models import Footprint
 from mansion.models.building import Floor, FloorCopy
-from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner, get_planner
+from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner
+from mansion.planning.planners import get_planner
 
 __all__ = [
     "ATTEMPTS",
