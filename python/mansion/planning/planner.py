@@ -47,6 +47,8 @@ class Constraints:
     max_floor_area: float = 500.0
     building_type: str | None = None
     load_bearing: bool | None = None
+    #: How far to relax the program (0: not at all; see ProgramOptions.relax).
+    relax: int = 0
 
 
 @dataclass(frozen=True)
@@ -70,6 +72,7 @@ def read_brief(description: str, constraints: Constraints, rng: random.Random) -
     options = ProgramOptions(
         floors=constraints.floors, area=constraints.area, outline=constraints.outline,
         max_floor_area=constraints.max_floor_area, load_bearing=constraints.load_bearing,
+        relax=constraints.relax,
     )
     return Brief(request, key, typ, palette, options)
 

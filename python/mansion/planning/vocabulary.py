@@ -218,6 +218,7 @@ ROOM_SYNONYMS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("bar", ("bar",)),
     ("food_court", ("food court",)),
     ("cinema", ("cinema", "movie theat(?:re|er)")),
+    ("bike_storage", ("bike (?:store|storage|room|shed)", "bicycle (?:store|storage|room|shed)")),
     ("shop", ("shop", "store", "boutique", "retail unit")),
     ("guest_room", ("guest room", "hotel room")),
     ("suite", ("suite",)),
