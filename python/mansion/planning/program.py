@@ -34,7 +34,7 @@ from mansion.planning.requested import FloorRequest, place_requests, record_requ
 from mansion.planning.room_names import slug
 from mansion.planning.typologies import TYPOLOGIES, FloorTemplate, Rm, Typology, Zone
 from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
-from mansion.planning.vocabulary import room_kind
+from mansion.planning.vocabulary import ROOMS, room_kind
 
 __all__ = [
     "AREA_MARGIN",
@@ -158,6 +158,15 @@ class ProgramOptions:
         self.relax = relax
 
 
+#: The usual area (m²) of a room type the vocabulary does not list (a named room such as "a
+#: quiet room"): twice the design table's general minimum, a small office's size.
+NAMED_ROOM_AREA = 12.0
+
+
+def _usual_area(room_type: str) -> float:
+    return ROOMS[room_type].area if room_type in ROOMS else NAMED_ROOM_AREA
+
+
 def resolve_constraints(
     request: Request, typ: Typology, options: ProgramOptions, rng: random.Random
 ) -> tuple[int, float]:
@@ -196,6 +205,15 @@ def resolve_constraints(
         area = min(request.total_area / floors, options.max_floor_area)
     else:
         area = rng.uniform(*typ.area)
+        # The rooms the description adds need room of their own: the floor grows by their usual
+        # areas (the most any one floor is asked to take), within the cap.
+        extra: dict[object, float] = {}
+        for p in request.placements:
+            key = "every" if p.per_floor else (p.floor if p.floor is not None else 0)
+            extra[key] = extra.get(key, 0.0) + p.count * _usual_area(p.room_type)
+        if extra:
+            every = extra.pop("every", 0.0)
+            area += every + max(extra.values(), default=0.0)
     if area < 20:
         raise InvalidInputError(f"{area:g} m² per floor is too small for a building floor (< 20 m²)")
     return floors, min(area, options.max_floor_area) if options.outline is None else area
@@ -265,7 +283,7 @@ def _apply_placements(rules: list[Rm], wants: list[FloorRequest], index: int) ->
         if room_type in here:
             zone = same[0].zone if same else None
             out = [r for r in out if r.room_type != room_type]
-            out.append(Rm(room_type, here[room_type], zone=zone))
+            out.append(Rm(room_type, here[room_type], area=None if room_type in ROOMS else NAMED_ROOM_AREA, zone=zone))
         else:
             out = [r for r in out if r.room_type != room_type or r.fill]
     return out

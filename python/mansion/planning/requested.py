@@ -60,8 +60,18 @@ def place_requests(
             p = Placement(**{**p.__dict__, "where": where})
         else:
             wanted = [p.floor]
-        where = wanted or [next((i for i in range(floors) if has_type(i, p.room_type)), 0)]
-        out += [FloorRequest(p.room_type, p.count, i, p.name, k) for i in where]
+        if wanted:
+            out += [FloorRequest(p.room_type, p.count, i, p.name, k) for i in wanted]
+        else:
+            # Anywhere: on the floors that have such rooms already ("a hospital with 20 wards"
+            # spreads its wards over the ward floors), else on the ground floor.
+            homes = [i for i in range(floors) if has_type(i, p.room_type)] or [0]
+            if p.count < len(homes):
+                homes = homes[:1]
+            share, rest = divmod(p.count, len(homes))
+            out += [
+                FloorRequest(p.room_type, share + (j < rest), i, p.name, k) for j, i in enumerate(homes)
+            ]
         records.append(RoomRequest(
             phrase=p.phrase, name=p.name or p.room_type.replace("_", " "), room_type=p.room_type,
             how=p.how, count=p.count, where=p.where, floors=wanted if not reasons else [],

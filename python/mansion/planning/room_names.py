@@ -71,7 +71,7 @@ HOME_MAX_MIN_AREA = 16.0
 
 _FILLER = re.compile(
     r"\b(?:big|small|large|little|spacious|generous|cosy|cozy|new|modern|bright|nice|separate|"
-    r"dedicated|proper|extra|additional|private|shared|own|its|their|his|her|the|an?)\b"
+    r"dedicated|proper|extra|additional|shared|own|its|their|his|her|the|an?)\b"
 )
 
 
@@ -102,7 +102,15 @@ def singular(word: str) -> str:
 
 
 def _synonym(words: list[str]) -> str | None:
-    """The type whose synonym (or own name) the last words are, longest match first."""
+    """The type whose synonym (or own name) the last words are, longest match first ("laundry
+    room" is a laundry when no type is called that)."""
+    found = _synonym_of(words)
+    if found is None and len(words) > 1 and words[-1] in ROOM_WORDS:
+        found = _synonym_of(words[:-1])
+    return found
+
+
+def _synonym_of(words: list[str]) -> str | None:
     for k in range(min(4, len(words)), 0, -1):
         tail = " ".join(words[-k:])
         for room_type, names in ROOM_SYNONYMS:

@@ -238,7 +238,7 @@ def read_rooms(text: str, building_family: str = "") -> tuple[list[Placement], l
             name = f"{head} {singular(last)}".strip()
         out.append(Placement(
             room_type=match.room_type, count=count, floor=where.floor, per_floor=where.per_floor,
-            name="" if name.replace(" ", "_") == match.room_type else name,
+            name="" if re.sub(r"[^a-z]", "", name) == match.room_type.replace("_", "") else name,
             phrase=seg, how=match.how, where=where.where, from_floor=where.from_floor,
             unsupported=where.unsupported,
         ))
