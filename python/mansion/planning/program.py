@@ -690,6 +690,58 @@ def min_arm(typ: Typology, building_type: str) -> float:
     return 4.0 if typ.family == "residential" and building_type not in BAY_TYPOLOGIES else 8.0
 
 
+def _free_area(outline: Outline, cores: list[BuildingCore], index: int) -> float:
+    on_floor = [c for c in cores if index in c.floors]
+    return Polygon(*outline).area - sum((c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in on_floor)
+
+
+def _move_requests(
+    typ: Typology, floors: int, outlines: list[Outline], cores: list[BuildingCore],
+    wants: list[FloorRequest], reserve: float, building_type: str, options: ProgramOptions,
+    has_type: Callable[[int, str], bool], why_not: dict[int, str],
+) -> list[FloorRequest]:
+    """The requests of a floor that cannot hold them at their minimum areas move to the nearest
+    floor that can (floors with such rooms first); ``why_not`` records each move by request."""
+
+    def holds(index: int, mine: list[FloorRequest]) -> bool:
+        template = _template(typ, _role(typ, index, floors))
+        base = [r for r in template.rooms if not (options.relax and r.optional)]
+        n_cores = sum(index in c.floors for c in cores)
+        for rules in (base, [r for r in base if not r.optional]):
+            try:
+                _generic_rooms(
+                    template, _apply_placements(rules, mine, index),
+                    _free_area(outlines[index], cores, index), reserve, "", building_type, n_cores,
+                )
+                return True
+            except PlannerError:
+                continue
+        return False
+
+    out = list(wants)
+    for index in range(floors):
+        here = [w for w in out if w.floor == index]
+        if not here or holds(index, out):
+            continue
+        for w in here:
+            others = sorted(
+                (j for j in range(floors) if j != index),
+                key=lambda j: (not has_type(j, w.room_type), abs(j - index), j),
+            )
+            for j in others:
+                moved = [x if x is not w else FloorRequest(w.room_type, w.count, j, w.name, w.source) for x in out]
+                if holds(j, moved):
+                    out = moved
+                    why_not[w.source] = (
+                        f"floor {index} cannot hold it at its minimum area with the rest of its "
+                        f"program; it is on floor {j} instead"
+                    )
+                    break
+            if holds(index, out):
+                break
+    return out
+
+
 def plan_program(
     request: Request,
     building_type: str,
@@ -743,6 +795,9 @@ def plan_program(
     wants, records = place_requests(request, floors, has_type)
     asked = list(wants)
     why_not: dict[int, str] = {}
+    if bay_plan is None:
+        wants = _move_requests(typ, floors, outlines, cores, wants, reserve, building_type, options, has_type, why_not)
+    placed = list(wants)
     for index in range(floors):
         role = _role(typ, index, floors)
         outline = outlines[index]
@@ -817,6 +872,6 @@ def plan_program(
     return BuildingProgram(
         building_type=building_type, reasoning=reasoning, floor_count=floors, area_per_floor=area,
         method=method, cores=cores, floors=floor_programs, load_bearing_walls=load_bearing,
-        requests=record_requests(records, asked, floor_programs, why_not),
+        requests=record_requests(records, asked, placed, floor_programs, why_not),
     )
 

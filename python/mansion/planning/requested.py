@@ -87,32 +87,39 @@ def place_requests(
     return out, records
 
 
+def _program(floors: list[FloorProgram | FloorCopy], index: int) -> FloorProgram:
+    floor = floors[index]
+    program = floors[floor.copy_of] if isinstance(floor, FloorCopy) else floor
+    assert isinstance(program, FloorProgram)
+    return program
+
+
 def _rooms_of(program: FloorProgram, want: FloorRequest) -> list[str]:
     return [r.id for r in program.rooms if r.room_type == want.room_type]
 
 
 def record_requests(
-    records: list[RoomRequest], wants: list[FloorRequest],
+    records: list[RoomRequest], asked: list[FloorRequest], placed: list[FloorRequest],
     floors: list[FloorProgram | FloorCopy], notes: dict[int, str],
 ) -> list[RoomRequest]:
     """``records`` after checking the written ``floors``: which floors have each request's rooms
-    and, where one lacks them, why (``notes``: why a request's rooms left a floor, by source)."""
+    and, where one lacks them, why (``notes``: why a request's rooms left a floor, by source).
+    ``asked`` are the floor requests as first placed, ``placed`` after moves between floors: a
+    request for given floors is checked on those, one for anywhere where it was placed."""
     out = []
     for k, record in enumerate(records):
-        mine = [w for w in wants if w.source == k]
         built: list[int] = []
         ids: list[str] = []
-        missing: list[str] = []
-        for w in mine:
-            floor = floors[w.floor]
-            program = floors[floor.copy_of] if isinstance(floor, FloorCopy) else floor
-            assert isinstance(program, FloorProgram)
-            have = _rooms_of(program, w)
+        for w in (w for w in placed if w.source == k):
+            have = _rooms_of(_program(floors, w.floor), w)
             named = [i for i in have if w.name and i.startswith(slug(w.name))] or have
             if len(have) >= w.count:
                 built.append(w.floor)
                 ids += named[: w.count]
-            else:
+        missing: list[str] = []
+        for w in (w for w in (asked if record.floors else placed) if w.source == k):
+            have = _rooms_of(_program(floors, w.floor), w)
+            if len(have) < w.count:
                 missing.append(f"floor {w.floor} has {len(have)} of the {w.count} asked for")
         update: dict[str, object] = {"built_on": built, "room_ids": ids}
         if missing:
