@@ -75,6 +75,18 @@ PHRASINGS = [
     ("a hotel with a spa on the ground floor and meeting rooms on the first floor", "hotel",
      {("spa", 1, 0, ""), ("meeting_room", 2, 1, "")}),
     ("a shopping centre with a cinema on the top floor", "shopping_mall", {("cinema", 1, -1, "")}),
+    ("two-storey family home with an office for working from home upstairs", "family_apartment",
+     {("study", 1, -1, "office")}),
+    ("I want a hospital with a maternity ward on the third floor and an ICU", "hospital",
+     {("ward", 1, 2, "maternity ward"), ("recovery_room", 1, None, "icu")}),
+    ("supermarket with a deli counter and a pharmacy near the entrance", "supermarket",
+     {("butcher_counter", 1, 0, "deli counter"), ("pharmacy", 1, 0, "")}),
+    ("an office building where each floor has a kitchenette and two phone booths", "office",
+     {("kitchenette", 1, "every", ""), ("phone_booth", 2, "every", "")}),
+    ("a five-storey apartment building with a concierge desk in the lobby", "apartment_block",
+     {("reception", 1, 0, "concierge desk")}),
+    ("a library with a makerspace and a sleeping alcove", "library",
+     {("makerspace", 1, None, ""), ("sleeping_alcove", 1, None, "")}),
     ("a three-storey mall, food court on the second floor", "shopping_mall", {("food_court", 1, 1, "")}),
 ]
 
@@ -232,3 +244,22 @@ def test_planner_module_does_not_import_the_llm_planner() -> None:
         node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom) and node.module
     }
     assert "mansion.planning.llm" not in imported
+
+
+def test_a_program_that_will_not_solve_is_replanned(monkeypatch: pytest.MonkeyPatch) -> None:
+    import mansion.building.steps as steps
+    from mansion.exceptions import InfeasibleLayoutError
+
+    real = steps.solve_floor
+    calls: list[int] = []
+
+    def flaky(*args: object, **kwargs: object):
+        calls.append(1)
+        if len(calls) <= steps.ATTEMPTS:  # the first program's ground floor never solves
+            raise InfeasibleLayoutError("no candidate survived")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(steps, "solve_floor", flaky)
+    b = generate_building("a two-storey townhouse with a study upstairs", seed=0)
+    assert any("program re-planned 1 time(s)" in r for r in b.floors[0].relaxations)
+    assert b.program.requests[0].honoured and b.program.requests[0].built_on == [1]

@@ -48,10 +48,15 @@ HEAD_NOUNS: dict[str, str] = {
     "sunroom": "family_room", "bedroom": "bedroom", "suite": "suite", "ward": "ward",
     "classroom": "classroom", "dormitory": "bedroom", "laundry": "laundry", "archive": "archive",
     "gallery": "lounge", "chapel": "lounge", "boardroom": "board_room", "dining": "dining_room",
+    "parking": "garage", "carport": "garage", "butcher": "butcher_counter",
+    "deli": "butcher_counter", "counter": "butcher_counter", "desk": "reception",
+    "pharmacy": "pharmacy", "dispensary": "pharmacy", "bakery": "bakery",
 }
 
 #: Head nouns that only say "a room": the room keeps its own name.
-ROOM_WORDS = frozenset({"room", "area", "space", "corner", "zone", "nook", "centre", "center", "station", "bay"})
+ROOM_WORDS = frozenset(
+    {"room", "area", "space", "corner", "zone", "nook", "alcove", "centre", "center", "station", "bay", "unit", "lab"}
+)
 
 #: Rooms of a home sized like their public namesakes' counterparts (see the module doc).
 HOME_COUNTERPARTS: dict[str, str] = {
@@ -163,10 +168,12 @@ def match_room(phrase: str, family: str = "") -> RoomMatch | None:
         head = words[-1]
         if head in HEAD_NOUNS:
             room_type, how = HEAD_NOUNS[head], "head noun"
-        elif head in ROOM_WORDS and len(words) > 1:
+        elif head in ROOM_WORDS and len(words) > 1 or any(
+            head.endswith(w) and len(head) > len(w) + 2 for w in ROOM_WORDS
+        ):
             return RoomMatch(slug(" ".join(words)), name, "named")
     if room_type is None:
         return None
-    if family == "residential" and room_design(room_type).min_area > HOME_MAX_MIN_AREA:
+    if family == "residential" and (room_type in HOME_COUNTERPARTS or room_design(room_type).min_area > HOME_MAX_MIN_AREA):
         room_type = HOME_COUNTERPARTS.get(room_type, "family_room")
     return RoomMatch(room_type, name, how)

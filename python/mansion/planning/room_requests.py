@@ -96,9 +96,11 @@ _SPATIAL = re.compile(
     r"along|around|between|facing|towards)\b.*$"
 )
 _ENTRANCE = re.compile(
-    r"\b(?:next to|near|by|beside|at|close to|off|opposite|facing) (?:the )?(?:main |front )?"
-    r"(?:entrance|entry|front door|street|lobby|foyer|reception)\b"
+    r"\b(?:(?:next to|near|by|beside|at|close to|off|opposite|facing) (?:the )?(?:main |front )?"
+    r"(?:entrance|entry|front door|street|lobby|foyer|reception)|in (?:the )?(?:main )?(?:entrance(?: hall)?|lobby|foyer))\b"
 )
+#: What follows a room's name and is not part of it: "an office for working from home".
+_CLAUSE = re.compile(r"\b(?:for|where|which|that|so|to|in which|with room for|big enough)\b.*$")
 _NOT_ROOMS = re.compile(
     r"\b(?:elevators?|lifts?|stairs?|stairwells?|staircases?|cores?|storeys?|stories|floors?|"
     r"levels?|m2|m²|sqm|square|metres?|meters?|feet|ft)\b"
@@ -135,7 +137,7 @@ def _location(seg: str, british: bool, zero_based: bool) -> tuple[_Where | None,
          _Where(None, True, "every upper floor", from_floor=1)),
         (r"\b" + on + r"(?:upper|higher) " + _FLOOR_WORD + r"\b|\bupstairs\b|\bon the floor above\b",
          _Where(-1, False, "upper floor", from_floor=1)),
-        (r"\b(?:per|on (?:each|every|all(?: the)?|all of the)|in (?:each|every)) " + _FLOOR_WORD + r"s?\b|\bon all " + _FLOOR_WORD + r"s\b",
+        (r"\b(?:per|(?:on |in )?(?:each|every)|on (?:all(?: the)?|all of the)) " + _FLOOR_WORD + r"s?\b|\bon all " + _FLOOR_WORD + r"s\b",
          _Where(None, True, "every floor")),
         (r"\b" + on + _ORD + r" " + _FLOOR_WORD + r"\b", "ordinal"),
         (r"\b(?:on|at|in) " + _FLOOR_WORD + r" (\d+)\b", "number"),
@@ -164,7 +166,7 @@ def _location(seg: str, british: bool, zero_based: bool) -> tuple[_Where | None,
         break
     if found is None and _ENTRANCE.search(seg):
         found = _Where(0, False, "ground floor (by the entrance)")
-    seg = _SPATIAL.sub("", seg)
+    seg = _CLAUSE.sub("", _SPATIAL.sub("", re.sub(r"\bin (?:the )?(?:main )?(?:entrance(?: hall)?|lobby|foyer)\b", "", seg)))
     return found, " ".join(seg.split())
 
 
@@ -221,7 +223,7 @@ def read_rooms(text: str, building_family: str = "") -> tuple[list[Placement], l
         if where is None:
             # "a pharmacy and a cafe on the ground floor": listed rooms share the next floor said
             for seg2, where2, _, words2, joint2 in parsed[i + 1:]:
-                if joint2 not in ("and", ",", "") or not words2:
+                if joint2 not in ("and", ",", "") or not words2 or match_room(words2) is None:
                     break
                 if where2 is not None:
                     where = where2
