@@ -263,3 +263,17 @@ def test_a_program_that_will_not_solve_is_replanned(monkeypatch: pytest.MonkeyPa
     b = generate_building("a two-storey townhouse with a study upstairs", seed=0)
     assert any("program re-planned 1 time(s)" in r for r in b.floors[0].relaxations)
     assert b.program.requests[0].honoured and b.program.requests[0].built_on == [1]
+
+
+@pytest.mark.parametrize(
+    "text", ["", ",,,", "with with and and", "on the top floor", "hotel " * 200, "a villa with a 🏊 pool"]
+)
+def test_odd_text_never_crashes_the_reading(text: str) -> None:
+    r = parse_description(text)
+    assert all(p.count >= 1 for p in r.placements)
+
+
+def test_zero_counts_and_zeroth_floors() -> None:
+    assert not parse_description("a hotel with 0 guest rooms").placements
+    (p,) = parse_description("a hotel with a bar on the 0th floor").placements
+    assert p.floor == 0

@@ -148,7 +148,9 @@ def _location(seg: str, british: bool, zero_based: bool) -> tuple[_Where | None,
             continue
         if what == "ordinal":
             n = _ordinal(m.group(1))
-            if british:
+            if n == 0:
+                found = _Where(0, False, f"{m.group(1)} floor (numbered from 0: the ground floor)")
+            elif british:
                 found = _Where(n, False, f"{m.group(1)} floor (British numbering: {n} above the ground floor)")
             else:
                 found = _Where(n - 1, False, f"{m.group(1)} floor (American numbering: the first floor is the ground floor)")
@@ -228,6 +230,8 @@ def read_rooms(text: str, building_family: str = "") -> tuple[list[Placement], l
                 if where2 is not None:
                     where = where2
                     break
+        if count == 0:
+            continue  # "0 rooms", like "no restaurant": nothing to build
         match = match_room(words, building_family)
         if match is None or count is None:
             if count is not None:
