@@ -815,10 +815,18 @@ def plan_program(
         else:
             template = _template(typ, role)
             base = [r for r in template.rooms if not (options.relax and r.optional)]
+            # A floor too small for its program leaves the template's optional rooms out
+            # (what the description asks for comes before them).
+            # A floor too small for its program leaves the template's optional rooms out, then
+            # keeps one of each fill room (what the description asks for comes before them).
             attempts = [base]
-            if here:
-                # What the description asks for comes before the template's optional rooms.
+            if any(r.optional for r in base):
                 attempts.append([r for r in base if not r.optional])
+            if any(r.fill and r.count > 1 for r in base):
+                attempts.append([
+                    Rm(r.room_type, 1, r.area, True, False, r.zone) if r.fill else r
+                    for r in base if not r.optional
+                ])
             for k, rules in enumerate(attempts):
                 try:
                     hub, hub_area, rooms, zones, relax = _generic_rooms(
@@ -826,7 +834,8 @@ def plan_program(
                         building_type, len(on_floor),
                     )
                     if k:
-                        relax = [*relax, "optional rooms left out for the rooms the description asks for"]
+                        relax = [*relax, "optional rooms left out" + (" and one of each repeated room" if k > 1 else "")
+                                 + ": the floor cannot hold them at their minimum areas"]
                     break
                 except PlannerError as exc:
                     error = exc

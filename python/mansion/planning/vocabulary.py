@@ -218,6 +218,7 @@ ROOM_SYNONYMS: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("bar", ("bar",)),
     ("food_court", ("food court", "food hall")),
     ("cinema", ("cinema", "movie theat(?:re|er)")),
+    ("anchor_store", ("anchor store", "department store", "supermarket", "hypermarket", "grocery(?: store)?")),
     ("bike_storage", ("bike (?:store|storage|room|shed|parking)", "bicycle (?:store|storage|room|shed|parking)")),
     ("shop", ("shop", "store", "boutique", "retail unit")),
     ("guest_room", ("guest room", "hotel room")),
