@@ -228,7 +228,7 @@ def test_each_type_builds_a_description_naming_rooms(kind: str) -> None:
 @pytest.mark.parametrize("kind", sorted(DESCRIPTIONS))
 def test_each_type_builds_all_its_descriptions(kind: str) -> None:
     for text in DESCRIPTIONS[kind]:
-        for seed in (11, 12):
+        for seed in (51,):  # beyond the sweep's 0-49
             try:
                 b = generate_building(text, seed=seed)
             except MansionError as exc:  # pragma: no cover - the message is the point

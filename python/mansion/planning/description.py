@@ -4,7 +4,9 @@ This is the offline half of the paper's ``ResolveNumericConstraints`` plus the f
 planner needs from the text. It understands ordinary phrasings ("a four-storey hospital",
 "4-story", "two elevators", "three classrooms per floor", "a gym on the top floor", "450 m² per
 floor") and leaves everything it cannot read to the planner's defaults, so an unusual sentence
-still yields a building. An LLM planner reads the same text itself and may ignore this module.
+still yields a building. The rooms it asks for, their counts and floors are read by
+:mod:`mansion.planning.room_requests`. An LLM planner reads the same text itself and may ignore
+this module.
 """
 
 from __future__ import annotations
@@ -12,7 +14,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from mansion.planning.room_requests import NUMBER_WORDS as _NUMBER_WORDS, Placement, family, parse_count, read_rooms
+from mansion.planning.room_requests import NUMBER_WORDS as _NUMBER_WORDS
+from mansion.planning.room_requests import Placement, family, parse_count, read_rooms
 from mansion.planning.vocabulary import BUILDING_KEYWORDS
 
 __all__ = ["Placement", "Request", "parse_description", "parse_count"]

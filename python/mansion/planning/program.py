@@ -27,7 +27,7 @@ from mansion.models.building import (
 )
 from mansion.planning.bays import BAY_TYPOLOGIES, BayPlan, BayProgram
 from mansion.planning.cores import CoreRequest, place_cores
-from mansion.planning.description import Placement, Request
+from mansion.planning.description import Request
 from mansion.planning.footprints import Outline, stack_outlines
 from mansion.planning.palette import room_materials
 from mansion.planning.requested import FloorRequest, place_requests, record_requests

@@ -59,7 +59,7 @@ def place_requests(
             where = f"{p.where.split(' (')[0]} (American numbering: the building has {floors} floors)"
             p = Placement(**{**p.__dict__, "where": where})
         else:
-            wanted = [p.floor]
+            wanted = [p.floor] if p.floor is not None else []
         if wanted:
             out += [FloorRequest(p.room_type, p.count, i, p.name, k) for i in wanted]
         else:

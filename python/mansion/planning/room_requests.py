@@ -117,7 +117,7 @@ class _Where:
 
 
 def _ordinal(word: str) -> int:
-    return ORDINALS[word] if word in ORDINALS else int(re.match(r"\d+", word).group(0))
+    return ORDINALS[word] if word in ORDINALS else int(re.sub(r"\D", "", word))
 
 
 def _location(seg: str, british: bool, zero_based: bool) -> tuple[_Where | None, str]:
