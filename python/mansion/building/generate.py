@@ -16,6 +16,7 @@ Any other planner (Claude) runs through the LangGraph pipeline of
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import random
@@ -34,11 +35,12 @@ from mansion.building.steps import (
     solve_building_floor,
     solver_options,
 )
-from mansion.exceptions import InvalidInputError
+from mansion.exceptions import InfeasibleLayoutError, InvalidInputError, PlannerError
 from mansion.floorplan import EnergyWeights
 from mansion.models import Footprint
-from mansion.models.building import Floor, FloorCopy
-from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner, get_planner
+from mansion.models.building import BuildingProgram, Floor, FloorCopy
+from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner
+from mansion.planning.planners import get_planner
 
 __all__ = [
     "ATTEMPTS",
@@ -52,7 +54,13 @@ __all__ = [
     "solve_building_floor",
     "solver_options",
     "generated_weights",
+    "PROGRAM_ATTEMPTS",
 ]
+
+#: Programs tried before giving up: the seed's own, then programs relaxed step by step (optional
+#: rooms left out, a larger circulation reserve; see ``ProgramOptions.relax``), each from its own
+#: seed. A failed floor solve or a program that does not fit its floor moves to the next one.
+PROGRAM_ATTEMPTS = 4
 
 
 def _footprint_outline(footprint: Footprint | str | os.PathLike[str] | None) -> Any:
@@ -139,8 +147,44 @@ def generate_building(
         return run_building_graph(
             plan, description, constraints, seed=seed, solver=solver, progress=progress
         )
-    rng = random.Random(derived_seed(seed, "program"))
-    program, palette = plan.plan_program(description, constraints, rng)
+    failures: list[str] = []
+    for attempt in range(PROGRAM_ATTEMPTS):
+        rng = random.Random(
+            derived_seed(seed, "program") if attempt == 0 else derived_seed(seed, "program", attempt)
+        )
+        relaxed = dataclasses.replace(constraints, relax=min(attempt, 2))
+        try:
+            program, palette = plan.plan_program(description, relaxed, rng)
+        except PlannerError as exc:
+            if attempt == PROGRAM_ATTEMPTS - 1:
+                raise
+            failures.append(f"program {attempt + 1}: {exc}")
+            continue
+        try:
+            done = _solve_floors(plan, program, seed, solver, progress, description)
+        except (InfeasibleLayoutError, InvalidInputError) as exc:
+            # InvalidInputError here is the solver refusing a program larger than its floor.
+            if attempt == PROGRAM_ATTEMPTS - 1:
+                raise type(exc)(
+                    f"no program could be laid out after {PROGRAM_ATTEMPTS} attempts; last: {exc}"
+                ) from None
+            failures.append(f"program {attempt + 1}: {exc}")
+            continue
+        if failures:
+            note = f"program re-planned {len(failures)} time(s), relaxed to level {min(attempt, 2)}: " + " | ".join(failures)
+            done[0] = done[0].model_copy(update={"relaxations": [*done[0].relaxations, note]})
+        if progress:
+            progress("checks", program.floor_count, program.floor_count)
+        return finish_building(description, seed, plan.name, program, palette, done, min_contact)
+    raise AssertionError("unreachable")
+
+
+def _solve_floors(
+    plan: BuildingPlanner, program: BuildingProgram, seed: int, solver: dict[str, Any], progress: Progress | None,
+    description: str,
+) -> list[Floor]:
+    """Every floor of ``program``, solved one after another (copies repeat their original);
+    ``description``'s position words seed the rounds (:mod:`mansion.floorplan.text_seeds`)."""
     total = program.floor_count
     done: list[Floor] = []
     for index in range(total):
@@ -153,6 +197,4 @@ def generate_building(
         graph = plan.plan_topology(program, index)
         below = done[index - 1] if index > 0 else None
         done.append(solve_building_floor(program, index, graph, below, seed, solver, description=description))
-    if progress:
-        progress("checks", total, total)
-    return finish_building(description, seed, plan.name, program, palette, done, min_contact)
+    return done

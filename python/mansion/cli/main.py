@@ -187,6 +187,9 @@ def generate(
             escape("; ".join(notes)),
         )
     console.print(table)
+    for request in program.requests:
+        if not request.honoured:
+            console.print(f"Not honoured: {escape(repr(request.phrase))}: {escape(request.reason)}")
     console.print(f"Generated in {seconds:.2f} s (palette: {escape(building.palette.name)}).")
     console.print(f"Wrote {escape(str(json_path))}, {len(pictures)} floor pictures and {escape(str(overview))}")
     if manifest is not None:

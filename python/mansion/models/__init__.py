@@ -15,6 +15,7 @@ from mansion.models.building import (
     Palette,
     ProgramRoom,
     RoomCard,
+    RoomRequest,
 )
 from mansion.models.footprint import Core, Footprint, Point, Ring
 from mansion.models.graph import CORE_TYPES, EdgeKind, NodeType, OpenRelation, RoomEdge, RoomGraph, RoomNode
@@ -41,6 +42,7 @@ __all__ = [
     "Palette",
     "ProgramRoom",
     "RoomCard",
+    "RoomRequest",
     "Adjacency",
     "Core",
     "Diagnostics",

@@ -38,6 +38,7 @@ __all__ = [
     "PositionWord",
     "ProgramRoom",
     "RoomCard",
+    "RoomRequest",
 ]
 
 #: Bumped on any change that an older reader could misread; readers refuse other major versions.
@@ -109,6 +110,28 @@ class BuildingCore(BaseModel):
     floors: list[int] = Field(min_length=1)
 
 
+class RoomRequest(BaseModel):
+    """A room the description asked for, and whether the building has it where it was asked.
+
+    ``floors`` are the 0-based floors it was asked on (several for "on every floor"; empty for
+    "anywhere"), ``built_on`` the floors that have it, ``room_ids`` its rooms there. When
+    ``honoured`` is false, ``reason`` says why (a basement the planner does not build, a floor the
+    building lacks, a floor too small to hold it at its minimum area).
+    """
+
+    phrase: str = Field(description="The words of the description, e.g. 'a nap room on the first floor'.")
+    name: str = Field(description="The room as asked, e.g. 'nap room'.")
+    room_type: str = Field(description="The room type built for it, e.g. 'sleep_room'.")
+    how: str = Field(default="", description="How the name was read: synonym, spelling, head noun, named.")
+    count: int = Field(ge=1)
+    where: str = Field(default="", description="How the floor was read, e.g. 'ground floor'.")
+    floors: list[int] = Field(default_factory=list)
+    built_on: list[int] = Field(default_factory=list)
+    room_ids: list[str] = Field(default_factory=list)
+    honoured: bool = True
+    reason: str = ""
+
+
 class BuildingProgram(BaseModel):
     """The building planner's answer: floors, vertical connectivity, cores, per-floor programs."""
 
@@ -126,6 +149,10 @@ class BuildingProgram(BaseModel):
     load_bearing_walls: bool = Field(
         default=False,
         description="Carry the walls of each floor's first cut round up as fixed walls.",
+    )
+    requests: list[RoomRequest] = Field(
+        default_factory=list,
+        description="The rooms the description asked for and whether each was honoured.",
     )
 
     @model_validator(mode="after")

@@ -237,6 +237,7 @@ _WORDS = [
     ("restaurant", "restaurant"), ("canteen", "restaurant"), ("cafeteria", "restaurant"),
     ("cafe", "restaurant"), ("dining", "restaurant"), ("food", "restaurant"),
     ("bedroom", "bedroom"), ("guest room", "bedroom"), ("dorm", "bedroom"), ("suite", "bedroom"),
+    ("sleep", "bedroom"), ("nap", "bedroom"),
     ("ward", "ward"), ("patient", "ward"), ("clinic", "ward"), ("exam", "ward"),
     ("shop", "shop"), ("store", "shop"), ("retail", "shop"), ("pharmacy", "shop"), ("market", "shop"),
     ("kitchen", "kitchen"), ("pantry", "kitchen"),

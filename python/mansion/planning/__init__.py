@@ -5,13 +5,8 @@
 """
 
 from mansion.planning.description import Placement, Request, parse_description
-from mansion.planning.planner import (
-    PLANNERS,
-    BuildingPlanner,
-    Constraints,
-    OfflinePlanner,
-    get_planner,
-)
+from mansion.planning.planner import BuildingPlanner, Constraints, OfflinePlanner
+from mansion.planning.planners import PLANNERS, get_planner
 from mansion.planning.program import DEFAULT_MAX_FLOOR_AREA, MAX_FLOORS
 
 __all__ = [

@@ -4,7 +4,9 @@ A :class:`BuildingPlanner` answers the paper's two planning questions: the whole
 (``plan_program``) and one floor's topology (``plan_topology``). The offline planner answers from
 rules of thumb and the seed; an LLM planner (Claude with the paper's prompt templates) answers
 the same two calls (:class:`mansion.planning.llm.AnthropicBuildingPlanner`), so the pipeline in
-:mod:`mansion.building` does not change with the planner.
+:mod:`mansion.building` does not change with the planner. Choosing a planner by name is
+:mod:`mansion.planning.planners`' job, so this module never imports the LLM planner (which
+imports :func:`read_brief` from here).
 """
 
 from __future__ import annotations
@@ -28,8 +30,6 @@ __all__ = [
     "BuildingPlanner",
     "Constraints",
     "OfflinePlanner",
-    "PLANNERS",
-    "get_planner",
     "read_brief",
 ]
 
@@ -47,6 +47,8 @@ class Constraints:
     max_floor_area: float = 500.0
     building_type: str | None = None
     load_bearing: bool | None = None
+    #: How far to relax the program (0: not at all; see ProgramOptions.relax).
+    relax: int = 0
 
 
 @dataclass(frozen=True)
@@ -70,6 +72,7 @@ def read_brief(description: str, constraints: Constraints, rng: random.Random) -
     options = ProgramOptions(
         floors=constraints.floors, area=constraints.area, outline=constraints.outline,
         max_floor_area=constraints.max_floor_area, load_bearing=constraints.load_bearing,
+        relax=constraints.relax,
     )
     return Brief(request, key, typ, palette, options)
 
@@ -112,23 +115,3 @@ class OfflinePlanner:
             template = typ.top if index == program.floor_count - 1 and typ.top else typ.upper
             adjacent = template.adjacent if template is not None else typ.ground.adjacent
         return floor_graph(floor, program.cores, adjacent, program.building_type)
-
-
-def _anthropic() -> BuildingPlanner:
-    # Imported here: the offline path never pays for the LLM modules.
-    from mansion.planning.llm import AnthropicBuildingPlanner
-
-    return AnthropicBuildingPlanner()
-
-
-#: Planner factories by name, as ``--planner`` offers them.
-PLANNERS = {"offline": OfflinePlanner, "anthropic": _anthropic}
-
-
-def get_planner(name: str | BuildingPlanner) -> BuildingPlanner:
-    """The planner called ``name`` (or ``name`` itself when it already is a planner)."""
-    if isinstance(name, BuildingPlanner):
-        return name
-    if name not in PLANNERS:
-        raise PlannerError(f"unknown planner {name!r}; choose from {', '.join(PLANNERS)}")
-    return PLANNERS[name]()

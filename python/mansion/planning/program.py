@@ -27,12 +27,14 @@ from mansion.models.building import (
 )
 from mansion.planning.bays import BAY_TYPOLOGIES, BayPlan, BayProgram
 from mansion.planning.cores import CoreRequest, place_cores
-from mansion.planning.description import Placement, Request
+from mansion.planning.description import Request
 from mansion.planning.footprints import Outline, stack_outlines
 from mansion.planning.palette import room_materials
+from mansion.planning.requested import FloorRequest, place_requests, record_requests
+from mansion.planning.room_names import slug
 from mansion.planning.typologies import TYPOLOGIES, FloorTemplate, Rm, Typology, Zone
 from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
-from mansion.planning.vocabulary import room_kind
+from mansion.planning.vocabulary import ROOMS, room_kind
 
 __all__ = [
     "AREA_MARGIN",
@@ -144,12 +146,25 @@ class ProgramOptions:
         outline: Outline | None = None,
         max_floor_area: float = DEFAULT_MAX_FLOOR_AREA,
         load_bearing: bool | None = None,
+        relax: int = 0,
     ) -> None:
         self.floors = floors
         self.area = area
         self.outline = outline
         self.max_floor_area = max_floor_area
         self.load_bearing = load_bearing
+        #: How far the program is relaxed after a failed attempt: from 1, optional rooms are
+        #: left out and the circulation reserve grows (see generate_building).
+        self.relax = relax
+
+
+#: The usual area (m²) of a room type the vocabulary does not list (a named room such as "a
+#: quiet room"): twice the design table's general minimum, a small office's size.
+NAMED_ROOM_AREA = 12.0
+
+
+def _usual_area(room_type: str) -> float:
+    return ROOMS[room_type].area if room_type in ROOMS else NAMED_ROOM_AREA
 
 
 def resolve_constraints(
@@ -159,16 +174,22 @@ def resolve_constraints(
     floors = options.floors if options.floors is not None else request.floors
     if floors is None:
         lowest = max(
-            [typ.floors[0]] + [p.floor + 1 for p in request.placements if p.floor not in (None, -1)]
+            [typ.floors[0]]
+            + [p.floor + 1 for p in request.placements if p.floor not in (None, -1)]
+            + [p.from_floor + 1 for p in request.placements]
         )
         floors = rng.randint(min(lowest, MAX_FLOORS), min(MAX_FLOORS, max(lowest, typ.floors[1])))
     if not 1 <= floors <= MAX_FLOORS:
         raise InvalidInputError(f"a building has 1 to {MAX_FLOORS} floors, asked for {floors}")
     for p in request.placements:
-        if p.floor is not None and p.floor >= floors:
+        # A floor the building does not have is a contradiction, unless the British reading of
+        # an ordinal overshoots by one and the American one fits (place_requests reads it so).
+        if p.floor is not None and p.floor >= floors and not (
+            "British numbering" in p.where and p.floor - 1 < floors
+        ):
             raise InvalidInputError(
-                f"the description puts {p.room_type} on floor {p.floor + 1}, "
-                f"but the building has {floors} floors"
+                f"the description puts {p.name or p.room_type.replace('_', ' ')} on floor {p.floor + 1} "
+                f"counting the ground floor as the first, but the building has {floors} floors"
             )
     if options.outline is not None:
         area = Polygon(*options.outline).area
@@ -184,6 +205,15 @@ def resolve_constraints(
         area = min(request.total_area / floors, options.max_floor_area)
     else:
         area = rng.uniform(*typ.area)
+        # The rooms the description adds need room of their own: the floor grows by their usual
+        # areas (the most any one floor is asked to take), within the cap.
+        extra: dict[object, float] = {}
+        for p in request.placements:
+            key = "every" if p.per_floor else (p.floor if p.floor is not None else 0)
+            extra[key] = extra.get(key, 0.0) + p.count * _usual_area(p.room_type)
+        if extra:
+            every = extra.pop("every", 0.0)
+            area += every + max(extra.values(), default=0.0)
     if area < 20:
         raise InvalidInputError(f"{area:g} m² per floor is too small for a building floor (< 20 m²)")
     return floors, min(area, options.max_floor_area) if options.outline is None else area
@@ -239,24 +269,47 @@ def _template(typ: Typology, role: str) -> FloorTemplate:
     return typ.upper
 
 
-def _on_floor(p: Placement, index: int, floors: int) -> bool:
-    return p.per_floor or p.floor == index or (p.floor == -1 and index == floors - 1)
-
-
-def _apply_placements(
-    rules: list[Rm], placements: list[Placement], index: int, floors: int
-) -> list[Rm]:
-    """The description's specifics: a placed room type gets exactly the asked count on its floor
-    and leaves the other floors (unless it is a fill room there, or asked on every floor)."""
+def _apply_placements(rules: list[Rm], wants: list[FloorRequest], index: int) -> list[Rm]:
+    """The description's rooms: a requested room type gets exactly the asked count on the floors
+    it is asked on, and leaves the other floors (unless it is a fill room there)."""
     out = list(rules)
-    for p in placements:
-        if _on_floor(p, index, floors):
-            same = [r for r in out if r.room_type == p.room_type]
+    asked = {w.room_type for w in wants}
+    here: dict[str, int] = {}
+    for w in wants:
+        if w.floor == index:
+            here[w.room_type] = here.get(w.room_type, 0) + w.count
+    for room_type in asked:
+        same = [r for r in out if r.room_type == room_type]
+        if room_type in here:
             zone = same[0].zone if same else None
-            out = [r for r in out if r.room_type != p.room_type]
-            out.append(Rm(p.room_type, p.count, zone=zone))
-        elif not p.per_floor:
-            out = [r for r in out if r.room_type != p.room_type or r.fill]
+            out = [r for r in out if r.room_type != room_type]
+            out.append(Rm(room_type, here[room_type], area=None if room_type in ROOMS else NAMED_ROOM_AREA, zone=zone))
+        else:
+            out = [r for r in out if r.room_type != room_type or r.fill]
+    return out
+
+
+def _name_rooms(program: list[ProgramRoom], names: list[FloorRequest]) -> list[ProgramRoom]:
+    """The rooms the description named ("a nap room") take the name as their id, and a note."""
+    out = list(program)
+    taken = {r.id for r in out}
+    for want in names:
+        if not want.name:
+            continue
+        base = slug(want.name)
+        todo = want.count
+        for i, room in enumerate(out):
+            if todo == 0:
+                break
+            if i == 0 and len(out) > 1 or room.room_type != want.room_type or room.notes.startswith("asked for"):
+                continue
+            rid = base if want.count == 1 else f"{base}_{want.count - todo + 1}"
+            while rid in taken and rid != room.id:
+                rid += "_"
+            taken.discard(room.id)
+            taken.add(rid)
+            out[i] = room.model_copy(update={"id": rid, "notes": f'asked for as "{want.name}"'})
+            todo -= 1
     return out
 
 
@@ -476,6 +529,7 @@ def _floor_program(
     palette: Palette,
     free: float,
     circulation: float,
+    names: list[FloorRequest] = (),  # type: ignore[assignment]
 ) -> FloorProgram:
     """Assemble the program: the hub first, then each zone's sub-hub followed by its rooms."""
     def card(
@@ -503,7 +557,7 @@ def _floor_program(
         program.append(card(rid, zone.hub, zone_hub_area, zid, f"sub-hub of zone {zid}"))
         program += [card(i, t, a, z) for i, (t, a, z) in zip(ids, ordered) if z == zid]
     program[1:1] = [card(i, t, a, z) for i, (t, a, z) in zip(ids, ordered) if z is None]
-    program = _with_ensuites(program, card)
+    program = _with_ensuites(_name_rooms(program, list(names)), card)
     gross = Polygon(*outline).area
     return FloorProgram(
         index=index, requirement=requirement, outline=outline[0], holes=outline[1],
@@ -531,6 +585,31 @@ def _with_ensuites(program: list[ProgramRoom], card: Callable[..., ProgramRoom])
     return out
 
 
+#: How far a floor's program may exceed its free area before it is shrunk: the solver scales the
+#: targets to the cut region, and rejects programs more than 10 % over it.
+FLOOR_OVERFILL = 1.005
+
+
+def _fit_floor(program: FloorProgram, free: float, where: str) -> tuple[FloorProgram, list[str]]:
+    """``program`` within its floor's ``free`` m² (up to :data:`FLOOR_OVERFILL`): rooms above
+    their minimum give area in proportion to what they have above it (:func:`fit_minimums`);
+    a program that cannot fit even at the minimums is a :class:`PlannerError`."""
+    budget = free
+    total = sum(r.area for r in program.rooms)
+    if total <= budget * FLOOR_OVERFILL:
+        return program, []
+    rooms = [(r.room_type, r.area) for r in program.rooms]
+    _, areas, missing = fit_minimums(rooms, budget, [])
+    if missing > 0:
+        raise PlannerError(
+            f"{where}: its rooms need {total - missing:.0f} m² at their minimum areas but the floor "
+            f"has {budget:.0f} m²; give a larger area or fewer rooms"
+        )
+    rooms_out = [r.model_copy(update={"area": round(a, 2)}) for r, a in zip(program.rooms, areas)]
+    note = f"rooms shrunk by {total - budget:.0f} m² to fit the floor's {free:.0f} m² of free area"
+    return program.model_copy(update={"rooms": rooms_out}), [note]
+
+
 def _circulation(program_rooms: list[ProgramRoom]) -> float:
     return sum(r.area for i, r in enumerate(program_rooms) if i == 0 or room_kind(r.room_type).role == "circulation" and r.notes.startswith("sub-hub"))
 
@@ -551,15 +630,19 @@ def _bay_floor(
     while len(uses) < n_bays:
         fitting = [p for p in plan.default if p.min_area <= bay_area] or [plan.default[0]]
         uses.append(rng.choice(fitting))
+    # The description's rooms go into the general bays, round-robin (into the last bay when the
+    # floor's bays all have a leading use); a room type a leading bay already has is there.
+    present = {t for use in uses[: len(plan.leading.get(role, ()))] for t in (use.hub, *(r.room_type for r in use.rooms))}
+    general = list(range(len(plan.leading.get(role, ())), n_bays)) or [n_bays - 1]
+    assigned: dict[int, list[Rm]] = {}
+    for j, r in enumerate(x for x in rules_extra if x.room_type not in present):
+        assigned.setdefault(general[j % len(general)], []).append(r)
     rooms: list[tuple[str, float, str | None]] = []
     zones: dict[str, Zone] = {}
-    extras = list(rules_extra)
     for k, use in enumerate(uses):
         zid = f"bay_{k + 1}"
         own = [(r.room_type, r.area or room_kind(r.room_type).area) for r in use.rooms for _ in range(r.count)]
-        # The description's rooms go into the largest general bays, round-robin.
-        if extras and k >= len(plan.leading.get(role, ())):
-            r = extras.pop(0)
+        for r in assigned.get(k, []):
             own = [o for o in own if o[0] != r.room_type]
             own += [(r.room_type, r.area or room_kind(r.room_type).area)] * r.count
         hub_share = 0.12 if room_kind(use.hub).role == "circulation" else 0.4
@@ -578,9 +661,6 @@ def _bay_floor(
         )
         zones[zid] = Zone(zid, plan.services.hub, sub_hub)
         rooms += [(t, a, zid) for (t, _), a in zip(own, areas)]
-    # Rooms asked for that found no general bay on this floor still go somewhere: the first bay.
-    for r in extras:
-        rooms += [(r.room_type, r.area or room_kind(r.room_type).area, "bay_1")] * r.count
     return plan.floor_hub[role], hub_area, rooms, zones
 
 
@@ -622,6 +702,58 @@ def min_arm(typ: Typology, building_type: str) -> float:
     return 4.0 if typ.family == "residential" and building_type not in BAY_TYPOLOGIES else 8.0
 
 
+def _free_area(outline: Outline, cores: list[BuildingCore], index: int) -> float:
+    on_floor = [c for c in cores if index in c.floors]
+    return Polygon(*outline).area - sum((c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in on_floor)
+
+
+def _move_requests(
+    typ: Typology, floors: int, outlines: list[Outline], cores: list[BuildingCore],
+    wants: list[FloorRequest], reserve: float, building_type: str, options: ProgramOptions,
+    has_type: Callable[[int, str], bool], why_not: dict[int, str],
+) -> list[FloorRequest]:
+    """The requests of a floor that cannot hold them at their minimum areas move to the nearest
+    floor that can (floors with such rooms first); ``why_not`` records each move by request."""
+
+    def holds(index: int, mine: list[FloorRequest]) -> bool:
+        template = _template(typ, _role(typ, index, floors))
+        base = [r for r in template.rooms if not (options.relax and r.optional)]
+        n_cores = sum(index in c.floors for c in cores)
+        for rules in (base, [r for r in base if not r.optional]):
+            try:
+                _generic_rooms(
+                    template, _apply_placements(rules, mine, index),
+                    _free_area(outlines[index], cores, index), reserve, "", building_type, n_cores,
+                )
+                return True
+            except PlannerError:
+                continue
+        return False
+
+    out = list(wants)
+    for index in range(floors):
+        here = [w for w in out if w.floor == index]
+        if not here or holds(index, out):
+            continue
+        for w in here:
+            others = sorted(
+                (j for j in range(floors) if j != index),
+                key=lambda j: (not has_type(j, w.room_type), abs(j - index), j),
+            )
+            for j in others:
+                moved = [x if x is not w else FloorRequest(w.room_type, w.count, j, w.name, w.source) for x in out]
+                if holds(j, moved):
+                    out = moved
+                    why_not[w.source] = (
+                        f"floor {index} cannot hold it at its minimum area with the rest of its "
+                        f"program; it is on floor {j} instead"
+                    )
+                    break
+            if holds(index, out):
+                break
+    return out
+
+
 def plan_program(
     request: Request,
     building_type: str,
@@ -649,7 +781,7 @@ def plan_program(
                 raise
 
     load_bearing = typ.load_bearing if options.load_bearing is None else options.load_bearing
-    reserve = rng.uniform(*typ.reserve)
+    reserve = rng.uniform(*typ.reserve) * (1 + 0.25 * options.relax)
     floor_programs: list[FloorProgram | FloorCopy] = []
     originals: list[tuple[tuple, int]] = []
 
@@ -663,36 +795,86 @@ def plan_program(
         n_bays = max(2, min(6, round(rooms_area / rng.uniform(*bay_plan.bay_area))))
         bay_area = rooms_area / n_bays
 
+    def has_type(index: int, room_type: str) -> bool:
+        if bay_plan is not None:
+            uses = [*bay_plan.leading.get(_role(typ, index, floors), ()), *bay_plan.default]
+            return any(room_type == u.hub or any(r.room_type == room_type for r in u.rooms) for u in uses)
+        template = _template(typ, _role(typ, index, floors))
+        return room_type == template.hub or any(r.room_type == room_type for r in template.rooms) or any(
+            z.hub == room_type for z in template.zones
+        )
+
+    wants, records = place_requests(request, floors, has_type)
+    asked = list(wants)
+    why_not: dict[int, str] = {}
+    if bay_plan is None:
+        wants = _move_requests(typ, floors, outlines, cores, wants, reserve, building_type, options, has_type, why_not)
+    placed = list(wants)
     for index in range(floors):
         role = _role(typ, index, floors)
         outline = outlines[index]
         on_floor = [c for c in cores if index in c.floors]
         free = Polygon(*outline).area - sum((c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in on_floor)
         where = f"floor {index} of the {building_type.replace('_', ' ')}"
+        here = [w for w in wants if w.floor == index]
         if bay_plan is not None:
-            extras = [
-                Rm(p.room_type, p.count) for p in request.placements if _on_floor(p, index, floors)
-            ]
+            extras = [Rm(w.room_type, w.count) for w in here]
             used = n_bays * bay_area + bay_plan.services_area
             hub, hub_area, rooms, zones = _bay_floor(
                 bay_plan, role, extras, n_bays, bay_area, bay_plan.services_area, free - used, rng
             )
-            relax = []
+            relax: list[str] = []
         else:
             template = _template(typ, role)
-            rules = _apply_placements(list(template.rooms), request.placements, index, floors)
-            hub, hub_area, rooms, zones, relax = _generic_rooms(
-                template, rules, free, reserve, where, building_type, len(on_floor)
-            )
+            base = [r for r in template.rooms if not (options.relax and r.optional)]
+            # A floor too small for its program leaves the template's optional rooms out
+            # (what the description asks for comes before them).
+            # A floor too small for its program leaves the template's optional rooms out, then
+            # keeps one of each fill room (what the description asks for comes before them).
+            attempts = [base]
+            if any(r.optional for r in base):
+                attempts.append([r for r in base if not r.optional])
+            if any(r.fill and r.count > 1 for r in base):
+                attempts.append([
+                    Rm(r.room_type, 1, r.area, True, False, r.zone) if r.fill else r
+                    for r in base if not r.optional
+                ])
+            for k, rules in enumerate(attempts):
+                try:
+                    hub, hub_area, rooms, zones, relax = _generic_rooms(
+                        template, _apply_placements(rules, wants, index), free, reserve, where,
+                        building_type, len(on_floor),
+                    )
+                    if k:
+                        relax = [*relax, "optional rooms left out" + (" and one of each repeated room" if k > 1 else "")
+                                 + ": the floor cannot hold them at their minimum areas"]
+                    break
+                except PlannerError as exc:
+                    error = exc
+            else:
+                if not here:
+                    raise error
+                # The floor cannot hold what the description asks on it: it keeps its own
+                # program, and the request is reported as not honoured.
+                for w in here:
+                    why_not[w.source] = f"the floor cannot hold it at its minimum area ({error})"
+                wants = [w for w in wants if w.floor != index]
+                here = []
+                hub, hub_area, rooms, zones, relax = _generic_rooms(
+                    template, _apply_placements(base, wants, index), free, reserve, where,
+                    building_type, len(on_floor),
+                )
+                relax = [*relax, "rooms the description asked for here left out: the floor cannot hold them"]
             hub_area, rooms, zones = _split_wings(hub_area, rooms, zones, building_type)
         requirement = f"{role} floor of a {building_type.replace('_', ' ')}: {typ.description}"
         program = _floor_program(
-            index, requirement, outline, hub, hub_area, rooms, zones, palette, free, 0.0
+            index, requirement, outline, hub, hub_area, rooms, zones, palette, free, 0.0, here
         )
+        program, fitted = _fit_floor(program, free, where)
         program = program.model_copy(
             update={
                 "reserve_ratio": round(min(1.0, _circulation(program.rooms) / free), 4),
-                "relaxations": relax,
+                "relaxations": relax + fitted,
             }
         )
         # Identical floors (same outline, same rooms) are written as the paper's copies.
@@ -711,5 +893,6 @@ def plan_program(
     return BuildingProgram(
         building_type=building_type, reasoning=reasoning, floor_count=floors, area_per_floor=area,
         method=method, cores=cores, floors=floor_programs, load_bearing_walls=load_bearing,
+        requests=record_requests(records, asked, placed, floor_programs, why_not),
     )
 
