@@ -29,6 +29,7 @@ from mansion.exceptions import (
     SurfaceFullError,
     UnknownObjectError,
 )
+from mansion.placement.assets import database
 from mansion.placement.check import footprint
 from mansion.scene import write_scenes
 from mansion.scene.validate import validate_path
@@ -52,7 +53,7 @@ PAPER = {
 def office(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """Two floors: a lobby with sofas below, a staff kitchen (dining table, fridge) above."""
     root = tmp_path_factory.mktemp("edit-office")
-    b = generate_building("a two-storey office with a staff kitchen on the top floor", floors=2, seed=0)
+    b = generate_building("a two-storey office with a staff kitchen on the top floor", floors=2, seed=1)
     write_scenes(b, root / "scenes")
     return root
 
@@ -73,7 +74,7 @@ def tools(office: Path) -> SceneTools:
 
 
 def _kitchen(tools: SceneTools, kind: str) -> str:
-    return next(i.id for i in tools.ws.of_type(1, kind) if i.room == "kitchen")
+    return next(i.id for i in tools.ws.of_type(1, kind) if i.room == "staff_kitchen")
 
 
 # -- the paper's example --------------------------------------------------------------------------
@@ -144,7 +145,7 @@ def test_editing_is_deterministic(office: Path, tmp_path: Path, paper_variant: A
 def test_objects_already_there_are_found_not_added(office: Path, tmp_path: Path) -> None:
     root = _copy(office, tmp_path)
     ws = Workspace(root)
-    table = next(i for i in ws.of_type(1, "DiningTable") if i.room == "kitchen")
+    table = next(i for i in ws.of_type(1, "DiningTable") if i.room == "staff_kitchen")
     there = ws.floor(1).objects[table.obj.children[0].id].props.object_type
     spec = {**PAPER, "fetch": [{"object_type": there, "floor": 1, "on": "DiningTable"}]}
     r = edit_building(root, EditSpec.model_validate(spec), name="found")
@@ -193,14 +194,14 @@ def test_spec_is_the_issue_format(tmp_path: Path) -> None:
 # -- the tools, one by one ----------------------------------------------------------------------
 def test_check_path_across_floors(tools: SceneTools) -> None:
     r = tools.check_path(0, "lobby", 1, "Kitchen")
-    assert r["ok"] and r["metres"] > 0 and r["cores"] and r["end"]["room"] == "kitchen"
+    assert r["ok"] and r["metres"] > 0 and r["cores"] and r["end"]["room"] == "staff_kitchen"
     assert any(ride.startswith(("TakeStairs", "UseElevator")) for ride in r["rides"])
-    same = tools.check_path(1, "kitchen", 1, "kitchen")
+    same = tools.check_path(1, "staff_kitchen", 1, "staff_kitchen")
     assert same["ok"] and same["cores"] == []
     with pytest.raises(UnknownObjectError, match="no room 'ballroom' on floor 0"):
-        tools.check_path(0, "ballroom", 1, "kitchen")
+        tools.check_path(0, "ballroom", 1, "staff_kitchen")
     with pytest.raises(UnknownObjectError, match="no floor 7"):
-        tools.check_path(7, "lobby", 1, "kitchen")
+        tools.check_path(7, "lobby", 1, "staff_kitchen")
 
 
 def test_search_assets_fuzzy_with_properties(tools: SceneTools) -> None:
@@ -260,7 +261,7 @@ def test_semantic_search_without_its_extra_says_what_to_install(monkeypatch: pyt
 
 
 def test_list_objects_joins_the_asset_database(tools: SceneTools) -> None:
-    kitchen = tools.list_objects(room="kitchen")["objects"]
+    kitchen = tools.list_objects(room="staff_kitchen")["objects"]
     fridge = next(o for o in kitchen if o["type"] == "Fridge")
     assert fridge["floor"] == 1 and fridge["receptacle"] and fridge["openable"] and fridge["open"] is False
     assert not fridge["pickupable"]
@@ -280,8 +281,8 @@ def test_check_surface_and_search_contents(tools: SceneTools) -> None:
     assert sorted(o["id"] for o in top["on_top"]) == sorted(children) and top["free_area_m2"] > 0
     fridge = tools.search_contents(_kitchen(tools, "Fridge"), floor=1)["receptacles"][0]
     assert fridge["inside"] == [] and fridge["open"] is False
-    with pytest.raises(UnknownObjectError, match="no receptacle 'kitchen|nothing'"):
-        tools.check_surface("kitchen|nothing", floor=1)
+    with pytest.raises(UnknownObjectError, match="no receptacle 'staff_kitchen|nothing'"):
+        tools.check_surface("staff_kitchen|nothing", floor=1)
     item = children[0]
     if not tools.ws.floor(1).objects[item].props.receptacle:
         with pytest.raises(IncompatibleReceptacleError):
@@ -332,7 +333,7 @@ def test_place_in_container_closed_incompatible_and_open(tools: SceneTools) -> N
     with pytest.raises(IncompatibleReceptacleError, match="cannot take"):
         tools.place_on_surface("Wine_Bottle_1", sofa, floor=0)
     with pytest.raises(UnknownObjectError, match="did you mean"):
-        tools.place_on_surface("Apple_1", "kitchen|tabel", floor=1)
+        tools.place_on_surface("Apple_1", "staff_kitchen|tabel", floor=1)
     with pytest.raises(UnknownObjectError, match="neither an AI2-THOR asset"):
         tools.place_on_surface("Apple_999", _kitchen(tools, "DiningTable"), floor=1)
     r = tools.place_in_container("Wine_Bottle_1", fridge, floor=1, open=True)
@@ -347,12 +348,13 @@ def test_place_in_container_closed_incompatible_and_open(tools: SceneTools) -> N
 def test_remove_object_and_moves(tools: SceneTools) -> None:
     table = _kitchen(tools, "DiningTable")
     st = tools.ws.floor(1)
-    first = st.objects[table].obj.children[0].id
+    counter_takes = database().receptacles["CounterTop"]
+    first = next(c.id for c in st.objects[table].obj.children if st.objects[c.id].props.object_type in counter_takes)
     with pytest.raises(InvalidInputError, match="one of the two"):
         tools.remove_object()
     with pytest.raises(UnknownObjectError):
-        tools.remove_object(object_id="kitchen|ghost", floor=1)
-    counter = next(i for i in tools.ws.of_type(1, "CounterTop") if i.room == "kitchen").id
+        tools.remove_object(object_id="staff_kitchen|ghost", floor=1)
+    counter = next(i for i in tools.ws.of_type(1, "CounterTop") if i.room == "staff_kitchen").id
     kind = st.objects[first].props.object_type
     moved = tools.place_on_surface(first, counter, floor=1)
     assert moved["placed"] == first and st.objects[first].parent == counter and tools.edits[-1].op == "move"
@@ -364,7 +366,7 @@ def test_remove_object_and_moves(tools: SceneTools) -> None:
 
 
 def test_run_dispatches_and_reports_typed_errors(tools: SceneTools) -> None:
-    ok, answer = tools.run("ListObjects", {"room": "kitchen", "floor": 1})
+    ok, answer = tools.run("ListObjects", {"room": "staff_kitchen", "floor": 1})
     assert ok and answer["count"] > 0
     ok, answer = tools.run("PlaceInContainer", {"asset_id": "Wine_Bottle_1", "container_id": _kitchen(tools, "Fridge"), "floor": 1})
     assert not ok and answer["error"].startswith("ContainerClosedError")
@@ -402,8 +404,10 @@ def test_patch_records_moves_removals_and_changes(tools: SceneTools) -> None:
 
     st = tools.ws.floor(1)
     table = _kitchen(tools, "DiningTable")
-    book, bowl = (c.id for c in st.objects[table].obj.children[:2])
-    counter = next(i for i in tools.ws.of_type(1, "CounterTop") if i.room == "kitchen").id
+    on_table = [c.id for c in st.objects[table].obj.children]
+    book = next(c for c in on_table if st.objects[c].props.object_type in database().receptacles["CounterTop"])
+    bowl = next(c for c in on_table if c != book)
+    counter = next(i for i in tools.ws.of_type(1, "CounterTop") if i.room == "staff_kitchen").id
     tools.place_on_surface(book, counter, floor=1)
     tools.remove_object(object_id=bowl, floor=1)
     tools.place_in_container("Apple_1", _kitchen(tools, "Fridge"), floor=1, open=True)
@@ -501,18 +505,17 @@ def test_react_controller_that_never_submits_fails_clearly(office: Path, tmp_pat
 
 
 def test_fetch_anywhere_goes_where_ai2thor_puts_it_most(office: Path, tmp_path: Path) -> None:
-    from mansion.placement.assets import database
-
     root = _copy(office, tmp_path)
-    spec = {**PAPER, "fetch": [{"object_type": "Tomato", "floor": 1}], "deliver": {"floor": 0, "on": "SideTable"}}
-    r = edit_building(root, EditSpec.model_validate(spec), name="tomato")
+    assert not any(i.props.object_type == "Potato" for i in Workspace(root).floor(1).objects.values())
+    spec = {**PAPER, "fetch": [{"object_type": "Potato", "floor": 1}], "deliver": {"floor": 0, "on": "SideTable"}}
+    r = edit_building(root, EditSpec.model_validate(spec), name="potato")
     assert r.ok, r.failed
     target = r.task.targets[0]
     ws = Workspace(root)
     present = {i.props.object_type for i in ws.floor(1).objects.values() if i.parent is None}
-    likely = {t: v["Tomato"] for t, v in database().receptacles.items() if "Tomato" in v and t in present}
+    likely = {t: v["Potato"] for t, v in database().receptacles.items() if "Potato" in v and t in present}
     assert target.receptacle_type == max(likely, key=lambda t: likely[t])
-    assert run_task(BuildingEnv(root, variant="tomato"), r.task, OracleAgent).success
+    assert run_task(BuildingEnv(root, variant="potato"), r.task, OracleAgent).success
 
 
 @pytest.mark.slow  # filling four sofas to the brim takes a few hundred placements
