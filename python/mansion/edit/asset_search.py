@@ -48,7 +48,7 @@ def sentence_embedder(model: str | None = None) -> Embedder:
     """An embedder from a sentence-transformers model (the ``semantic`` extra): ``model``, else
     ``$MANSION_EMBEDDING_MODEL``, else :data:`DEFAULT_EMBEDDING_MODEL`."""
     try:
-        from sentence_transformers import SentenceTransformer
+        from sentence_transformers import SentenceTransformer  # type: ignore[import-not-found]  # the semantic extra
     except ImportError:
         raise InvalidInputError("semantic asset search needs sentence-transformers: pip install 'mansion[semantic]'") from None
     name = model or os.environ.get("MANSION_EMBEDDING_MODEL") or DEFAULT_EMBEDDING_MODEL
