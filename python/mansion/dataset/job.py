@@ -125,7 +125,7 @@ def _solver_seconds(building: Any) -> float:
 def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock) -> dict[str, Any]:
     from mansion.building import generate_building
     from mansion.scene import build_scenes, validate_building
-    from mansion.scene.instantiate import floor_file
+    from mansion.scene.write import save_scenes
     from mansion.scene.validate import errors
 
     solving = False
@@ -149,9 +149,7 @@ def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock
     clock.lap("scenes")
     solver_seconds = _solver_seconds(building)
     building.to_json(stage / "building.json")  # no timings: the models never write them
-    for house, floor in zip(scenes.houses, scenes.manifest.floors, strict=True):
-        house.to_json(stage / "scenes" / floor_file(floor.index))
-    manifest = scenes.manifest.to_json(stage / "scenes" / "manifest.json")
+    manifest = save_scenes(scenes, stage / "scenes")
     clock.lap("writing")
     warnings = 0
     if settings.validate:

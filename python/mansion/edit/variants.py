@@ -24,7 +24,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from mansion._io import atomic_write_bytes, atomic_write_text
 from mansion.exceptions import EditError, InvalidInputError
-from mansion.scene.house import House
+from mansion.scene.house import House, house_text
 from mansion.sim.tasks import TaskSet, TaskSpec
 from mansion.sim.world import building_root, find_manifest
 
@@ -202,7 +202,7 @@ def patch_house(base: dict[str, Any], patch: FloorPatch) -> dict[str, Any]:
 
 
 def _house_bytes(house: dict[str, Any]) -> bytes:
-    return (json.dumps(house, indent=1) + "\n").encode("utf-8")
+    return house_text(house).encode("utf-8")
 
 
 # -- saving and loading -----------------------------------------------------------------------

@@ -8,7 +8,6 @@ floor. Nothing here writes files: :mod:`mansion.edit.variants` saves what the to
 
 from __future__ import annotations
 
-import json
 import re
 from pathlib import Path
 from typing import Any
@@ -17,6 +16,7 @@ import numpy as np
 from rapidfuzz import fuzz, process
 
 from mansion.exceptions import UnknownObjectError
+from mansion.scene.house import house_text
 from mansion.sim.grid import CELL
 from mansion.sim.planner import BuildingMap
 from mansion.sim.world import Building, FloorState, ObjectInfo, building_root, find_manifest
@@ -70,7 +70,7 @@ class Workspace:
         """Floor k's house as it is now, in the bytes ``House.to_json`` writes."""
         if k not in self.edited:
             return self.base_bytes(k)
-        return (json.dumps(self.building.house(k).to_dict(), indent=1) + "\n").encode("utf-8")
+        return house_text(self.building.house(k).to_dict()).encode("utf-8")
 
     def touch(self, k: int) -> None:
         self.edited.add(k)

@@ -27,7 +27,6 @@ What is written into the output folder (their conventions, see :mod:`mansion.sce
 from __future__ import annotations
 
 import copy
-import json
 import math
 import os
 import re
@@ -37,7 +36,7 @@ from typing import Any
 from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError
 from mansion.scene.databases import hole_asset_position
-from mansion.scene.house import House, Wall
+from mansion.scene.house import House, Wall, house_text
 from mansion.scene.manifest import ManifestCore
 from mansion.scene.mansionworld import (
     ELEVATOR_PANEL,
@@ -358,7 +357,7 @@ def write_mansionworld(building: str | os.PathLike[str], out: str | os.PathLike[
     texts = {}
     for k in order:
         house, _, _ = mansionworld_floor(houses[k], numbers[k], k, numbers, cores)
-        texts[numbers[k]] = json.dumps(house, indent=1) + "\n"
+        texts[numbers[k]] = house_text(house)
     folder.mkdir(parents=True, exist_ok=True)
     # floors left from a taller building written here before would be read as this one's
     stale = len(order) + 1

@@ -55,6 +55,7 @@ __all__ = [
     "Wall",
     "Window",
     "house_json_schema",
+    "house_text",
 ]
 
 #: The value of ``metadata.schema`` this module reads and writes.
@@ -341,7 +342,7 @@ class House(_Thor):
 
     def to_json(self, path: str | os.PathLike[str], *, indent: int | None = 1) -> Path:
         """Write the house, atomically. Returns the path."""
-        return atomic_write_text(path, json.dumps(self.to_dict(), indent=indent) + "\n")
+        return atomic_write_text(path, house_text(self.to_dict(), indent=indent))
 
     @classmethod
     def parse(cls, data: Any, *, source: str = "house") -> House:
@@ -367,3 +368,9 @@ def house_json_schema() -> dict[str, Any]:
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
     schema["title"] = f"AI2-THOR procedural house (schema {HOUSE_SCHEMA}), as written by mansion"
     return schema
+
+
+def house_text(data: dict[str, Any], *, indent: int | None = 1) -> str:
+    """A house JSON object as every house file mansion writes holds it (:meth:`House.to_json`):
+    edits, variants and exports compare files byte for byte, so they all write through this."""
+    return json.dumps(data, indent=indent) + "\n"

@@ -6,9 +6,9 @@ import os
 from pathlib import Path
 
 from mansion.models.building import Building
-from mansion.scene.instantiate import build_scenes, floor_file
+from mansion.scene.instantiate import BuildingScenes, build_scenes, floor_file
 
-__all__ = ["write_scenes"]
+__all__ = ["save_scenes", "write_scenes"]
 
 
 def write_scenes(
@@ -19,8 +19,13 @@ def write_scenes(
 
     The manifest is written last, so a folder with a manifest always has all its floors.
     """
+    return save_scenes(build_scenes(building, objects=objects), folder)
+
+
+def save_scenes(scenes: BuildingScenes, folder: str | os.PathLike[str]) -> Path:
+    """Write scenes already built (:func:`build_scenes`) into ``folder``, the manifest last;
+    returns the manifest."""
     out = Path(folder)
-    scenes = build_scenes(building, objects=objects)
     for house, floor in zip(scenes.houses, scenes.manifest.floors, strict=True):
         house.to_json(out / floor_file(floor.index))
     return scenes.manifest.to_json(out / "manifest.json")
