@@ -167,8 +167,7 @@ def test_the_checks_flood_fill_matches_a_plain_breadth_first_search() -> None:
         h, w = int(rng.integers(1, 40)), int(rng.integers(1, 40))
         free = rng.random((h, w)) < 0.6
         seeds = rng.random((h, w)) < 0.02
-        space = FreeSpace(np.zeros(h * w), np.zeros(h * w), np.empty(h * w, dtype=object), (h, w),
-                          free.ravel(), free.ravel())
+        space = FreeSpace(np.zeros(h * w), np.zeros(h * w), (h, w), free.ravel(), free.ravel())
         got = space.flood(seeds.ravel()).reshape(h, w)
         want = np.zeros((h, w), dtype=bool)
         queue = deque(zip(*np.nonzero(seeds & free)))
@@ -181,3 +180,52 @@ def test_the_checks_flood_fill_matches_a_plain_breadth_first_search() -> None:
                     want[yy, xx] = True
                     queue.append((yy, xx))
         assert (got == want).all()
+
+
+def test_the_checks_free_cells_match_shapely_distances() -> None:
+    """FreeSpace.build measures distances with numpy (rectangles in one formula, other shapes
+    edge by edge); every cell must agree with shapely's own point-to-shape distance."""
+    import numpy as np
+    import shapely
+    from shapely.geometry import Polygon
+
+    from mansion.placement.check import FreeSpace, footprint, solid_walls
+
+    rng = np.random.default_rng(11)
+    ring = [(0.0, 0.0), (4.0, 0.0), (4.0, 2.5), (2.5, 2.5), (2.5, 3.5), (0.0, 3.5)]
+    gaps = [((1.0, 0.0), (1.9, 0.0)), ((2.5, 2.6), (2.5, 3.4))]
+    for _ in range(12):
+        obstacles = [footprint((float(rng.uniform(0, 4)), float(rng.uniform(0, 3.5))), float(rng.uniform(0.1, 1.5)),
+                               float(rng.uniform(0.1, 1.5)), float(rng.choice([0, 90, 33.3, -147.0])))
+                     for _ in range(int(rng.integers(1, 6)))]
+        # an L-shaped obstacle takes the edge-by-edge path
+        obstacles.append(Polygon([(3, 0.2), (3.8, 0.2), (3.8, 1.2), (3.5, 1.2), (3.5, 0.5), (3, 0.5)]))
+        radius = float(rng.choice([0.25, 0.3]))
+        space = FreeSpace.build(ring, gaps, obstacles, radius, cell=0.05)
+        pts = shapely.points(space.px, space.py)
+        inside = shapely.contains_xy(Polygon(ring), space.px, space.py)
+        walls = shapely.distance(solid_walls(ring, gaps), pts)
+        objs = shapely.distance(shapely.union_all(obstacles), pts)
+        want_open = inside & (walls >= radius)
+        want_free = want_open & (objs >= radius)
+        # cells within a nanometre of the radius may fall either way
+        edge = (np.abs(walls - radius) < 1e-9) | (np.abs(objs - radius) < 1e-9)
+        assert np.array_equal(space.open[~edge], want_open[~edge])
+        assert np.array_equal(space.free[~edge], want_free[~edge])
+        assert space.free.sum() < space.open.sum()
+
+
+def test_footprint_is_the_box_turned_by_the_yaw() -> None:
+    """check.footprint computes the corners itself: the same polygon as shapely's box turned
+    by -yaw about the centre and moved there."""
+    from shapely.affinity import rotate, translate
+    from shapely.geometry import box
+
+    from mansion.placement.check import footprint
+
+    for yaw in (0.0, 90.0, 180.0, 270.0, -90.0, 33.3, 359.0):
+        got = footprint((1.2, -3.4), 0.8, 0.3, yaw)
+        want = translate(rotate(box(-0.4, -0.15, 0.4, 0.15), -yaw, origin=(0, 0)), 1.2, -3.4)
+        assert got.equals_exact(want, 1e-12)
+    # a quarter turn stays exactly axis-aligned
+    assert footprint((0.0, 0.0), 2.0, 1.0, 90.0).bounds == (-0.5, -1.0, 0.5, 1.0)

@@ -16,8 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 from numpy.typing import NDArray
-from shapely.affinity import rotate, translate
-from shapely.geometry import LineString, MultiLineString, Polygon, box
+from shapely.geometry import LineString, MultiLineString, Polygon
 
 __all__ = ["PASSAGE_MARGIN", "FreeSpace", "footprint", "passable", "solid_walls"]
 
@@ -30,9 +29,19 @@ Mask = NDArray[np.bool_]
 
 def footprint(center: Pt, width: float, depth: float, yaw: float) -> Polygon:
     """An object's footprint on the plan (x, y) — the scene's (x, z) — with AI2-THOR's yaw in
-    degrees (0 faces +y, 90 faces +x)."""
-    shape = rotate(box(-width / 2, -depth / 2, width / 2, depth / 2), -yaw, origin=(0, 0))
-    return translate(shape, center[0], center[1])
+    degrees (0 faces +y, 90 faces +x): its corners turned by -yaw about the centre. Computed
+    directly rather than by shapely's box, rotate and translate: the same corners to 1e-14 m in a
+    fifth of the time (22 against 100 µs; the validator builds one per object)."""
+    a = math.radians(-yaw)
+    cos, sin = math.cos(a), math.sin(a)
+    # as shapely.affinity.rotate does: a quarter turn is exact, not cos = 6e-17
+    cos = 0.0 if abs(cos) < 2.5e-16 else cos
+    sin = 0.0 if abs(sin) < 2.5e-16 else sin
+    cx, cy = center
+    hw, hd = width / 2, depth / 2
+    # shapely's box order (counter-clockwise from the lower right corner)
+    return Polygon([(cos * x - sin * y + cx, sin * x + cos * y + cy)
+                    for x, y in ((hw, -hd), (hw, hd), (-hw, hd), (-hw, -hd))])
 
 
 def passable(width: float, radius: float) -> bool:
@@ -50,12 +59,99 @@ def solid_walls(ring: Sequence[Pt], gaps: Sequence[tuple[Pt, Pt]]) -> MultiLineS
     return MultiLineString([list(g.coords) for g in parts])
 
 
-def _clear_of(shape: shapely.Geometry, pts: NDArray[np.object_], radius: float) -> Mask:
-    """Which points lie at least ``radius`` from ``shape``: a prepared ``dwithin`` test, which
-    stops at the first part near enough instead of measuring every distance (measured: 4-5×
-    faster than ``distance >= radius`` over a furnished room's union of footprints, same cells)."""
-    shapely.prepare(shape)
-    return np.asarray(~shapely.dwithin(shape, pts, radius - 1e-12))
+def _segments(shape: shapely.Geometry) -> NDArray[np.float64]:
+    """The straight pieces of a line or polygon's boundary as rows (ax, ay, bx, by)."""
+    rows = []
+    for part in shapely.get_parts(shapely.boundary(shape) if shape.geom_type.endswith("Polygon") else shape):
+        for line in shapely.get_parts(part):
+            xy = np.asarray(line.coords)[:, :2]
+            if len(xy) > 1:
+                rows.append(np.hstack([xy[:-1], xy[1:]]))
+    return np.vstack(rows) if rows else np.zeros((0, 4))
+
+
+Rect = tuple[float, float, float, float, float, float]
+
+
+def _rectangle(shape: shapely.Geometry) -> Rect | None:
+    """(centre x, y, unit axis x, y, half length, half width) of a rectangle (a footprint), or
+    None for any other shape."""
+    if shape.geom_type != "Polygon" or len(shape.interiors) > 0:
+        return None
+    xy = np.asarray(shape.exterior.coords)
+    if len(xy) != 5:
+        return None
+    p0, p1, p2, p3 = xy[0], xy[1], xy[2], xy[3]
+    u, v = p1 - p0, p3 - p0
+    lu, lv = math.hypot(*u), math.hypot(*v)
+    if lu <= 0 or lv <= 0 or abs(float(u @ v)) > 1e-9 * lu * lv or np.abs(p0 + u + v - p2).max() > 1e-9:
+        return None
+    c = (p0 + p2) / 2
+    return float(c[0]), float(c[1]), float(u[0] / lu), float(u[1] / lu), lu / 2, lv / 2
+
+
+def _distance2(rect: Rect, x: NDArray[np.float64], y: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Squared distance from the points to the rectangle (0 inside)."""
+    cx, cy, ux, uy, hu, hv = rect
+    dx, dy = x - cx, y - cy
+    a = np.maximum(np.abs(dx * ux + dy * uy) - hu, 0.0)
+    b = np.maximum(np.abs(dy * ux - dx * uy) - hv, 0.0)
+    return a * a + b * b
+
+
+def _segment_distance2(seg: NDArray[np.float64] | Sequence[float], x: NDArray[np.float64],
+                       y: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Squared distance from the points to the segment (ax, ay, bx, by), and where along it (0 to
+    1, unclamped) each point projects."""
+    ax, ay, bx, by = seg
+    wx, wy = x - ax, y - ay
+    dx, dy = bx - ax, by - ay
+    n2 = dx * dx + dy * dy
+    t = (wx * dx + wy * dy) / n2 if n2 > 0 else np.zeros_like(wx)
+    u = np.clip(t, 0.0, 1.0)
+    ex, ey = wx - u * dx, wy - u * dy
+    return ex * ex + ey * ey, t
+
+
+def _window(xs: NDArray[np.float64], ys: NDArray[np.float64], bounds: tuple[float, float, float, float],
+            pad: float) -> tuple[slice, slice] | None:
+    """The grid rows and columns whose centres lie in ``bounds`` grown by ``pad``."""
+    x0, y0, x1, y1 = bounds
+    i0, i1 = np.searchsorted(ys, y0 - pad), np.searchsorted(ys, y1 + pad, "right")
+    j0, j1 = np.searchsorted(xs, x0 - pad), np.searchsorted(xs, x1 + pad, "right")
+    return (slice(int(i0), int(i1)), slice(int(j0), int(j1))) if i0 < i1 and j0 < j1 else None
+
+
+def _blocked(gx: NDArray[np.float64], gy: NDArray[np.float64], shapes: Sequence[shapely.Geometry],
+             radius: float) -> Mask:
+    """Which grid points lie closer than ``radius`` to one of the shapes (inside a polygon
+    counts). Measured with numpy in each shape's window of the grid (one formula for a
+    rectangle, one per edge for other shapes) rather than by a prepared shapely ``dwithin`` per
+    point over the shapes' union: the validator's rooms of a seven-storey hospital build their
+    grids about five times faster (12 → 2.5 ms a room), cell for cell the same."""
+    near = np.zeros(gx.shape, dtype=bool)
+    xs, ys = gx[0], gy[:, 0]
+    r = radius - 1e-12
+    r2 = r * r
+    for shape in shapes:
+        if shape.is_empty:
+            continue
+        rect = _rectangle(shape)
+        if rect is not None:
+            win = _window(xs, ys, shape.bounds, r)
+            if win is not None:
+                near[win] |= _distance2(rect, gx[win], gy[win]) < r2
+            continue
+        for seg in _segments(shape):
+            win = _window(xs, ys, (min(seg[0], seg[2]), min(seg[1], seg[3]), max(seg[0], seg[2]),
+                                   max(seg[1], seg[3])), r)
+            if win is not None:
+                near[win] |= _segment_distance2(seg, gx[win], gy[win])[0] < r2
+        if shape.geom_type.endswith("Polygon"):
+            win = _window(xs, ys, shape.bounds, 0.0)
+            if win is not None:
+                near[win] |= shapely.contains_xy(shape, gx[win], gy[win])
+    return near
 
 
 @dataclass
@@ -64,7 +160,6 @@ class FreeSpace:
 
     px: NDArray[np.float64]
     py: NDArray[np.float64]
-    points: NDArray[np.object_]
     shape: tuple[int, int]
     open: Mask  # inside the room and clear of the solid walls
     free: Mask  # open and clear of every object
@@ -78,25 +173,17 @@ class FreeSpace:
         x0, y0, x1, y1 = poly.bounds
         w, h = max(1, math.ceil((x1 - x0) / cell)), max(1, math.ceil((y1 - y0) / cell))
         gx, gy = np.meshgrid(x0 + (np.arange(w) + 0.5) * cell, y0 + (np.arange(h) + 0.5) * cell)
-        px, py = gx.ravel(), gy.ravel()
-        pts = shapely.points(px, py)
-        open_ = shapely.contains_xy(poly, px, py)
-        open_[open_] = _clear_of(solid_walls(ring, gaps), pts[open_], radius)
-        free = open_.copy()
-        if obstacles:
-            free[free] = _clear_of(shapely.union_all(list(obstacles)), pts[free], radius)
-        return cls(px, py, pts, (h, w), open_, free)
+        open_ = shapely.contains_xy(poly, gx, gy) & ~_blocked(gx, gy, [solid_walls(ring, gaps)], radius)
+        free = open_ & ~_blocked(gx, gy, obstacles, radius) if obstacles else open_.copy()
+        return cls(gx.ravel(), gy.ravel(), (h, w), open_.ravel(), free.ravel())
 
     def in_front_of(self, a: Pt, b: Pt, reach: float) -> Mask:
         """Cells within ``reach`` of the segment a–b whose projection falls on it: where an
         agent stands just inside a door or opening."""
-        ax, ay = a
-        dx, dy = b[0] - ax, b[1] - ay
-        n2 = dx * dx + dy * dy
         out = self._around(LineString([a, b]), reach)
         k = np.flatnonzero(out)
-        t = ((self.px[k] - ax) * dx + (self.py[k] - ay) * dy) / n2
-        out[k] = (shapely.distance(self.points[k], LineString([a, b])) < reach) & (t >= 0.0) & (t <= 1.0)
+        d2, t = _segment_distance2((a[0], a[1], b[0], b[1]), self.px[k], self.py[k])
+        out[k] = (d2 < reach * reach) & (t >= 0.0) & (t <= 1.0)
         return out
 
     def _around(self, shape: Polygon | LineString, dist: float) -> Mask:
@@ -125,13 +212,22 @@ class FreeSpace:
     ) -> bool:
         """Whether a reached cell lies within ``reach`` of the footprint; with ``front`` (the
         object's centre, yaw and depth) only cells on its front side count."""
-        near = reached & self._around(fp, reach)
-        k = np.flatnonzero(near)
-        near[k] = shapely.distance(self.points[k], fp) < reach
+        h, w = self.shape
+        win = _window(self.px[:w], self.py[::w], fp.bounds, reach)
+        if win is None:
+            return False
+        x, y = self.px.reshape(h, w)[win], self.py.reshape(h, w)[win]
+        near = reached.reshape(h, w)[win].copy()
+        k = np.nonzero(near)
+        rect = _rectangle(fp)
+        if rect is not None:
+            near[k] = _distance2(rect, x[k], y[k]) < reach * reach
+        else:
+            near[k] = shapely.distance(shapely.points(x[k], y[k]), fp) < reach
         if front is not None and near.any():
             (cx, cy), yaw, depth = front
             fx, fy = math.sin(math.radians(yaw)), math.cos(math.radians(yaw))
-            near &= (self.px - cx) * fx + (self.py - cy) * fy >= depth / 2 - 1e-9
+            near &= (x - cx) * fx + (y - cy) * fy >= depth / 2 - 1e-9
         return bool(near.any())
 
 

@@ -63,6 +63,7 @@ from typing import Any
 import numpy as np
 from pydantic import ValidationError
 from shapely.geometry import Point, Polygon
+from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
 from mansion.exceptions import InvalidInputError
@@ -439,9 +440,13 @@ class _HouseCheck:
     def objects(self) -> None:
         db = asset_ids()
         floor: dict[str, list[_Placed]] = defaultdict(list)
+        ids = list(self.polys)
+        tree = STRtree([self.polys[i] for i in ids])
+        margins: dict[str, BaseGeometry] = {}
         for obj in self.house.objects:
             p = Point(obj.position.x, obj.position.z)
-            inside = [rid for rid, poly in self.polys.items() if poly.covers(p)]
+            # the rooms covering the centre, in the house's order (the tree only narrows them)
+            inside = [ids[k] for k in sorted(int(j) for j in tree.query(p, predicate="covered_by"))]
             if not inside:
                 self.add("object-in-room", obj.id, f"centre ({obj.position.x:.3f}, {obj.position.z:.3f}) is in no room")
                 continue
@@ -452,7 +457,9 @@ class _HouseCheck:
             placed = self._placed(obj, db)
             if placed is None:
                 continue  # an unknown asset: reported under object-asset
-            out = placed.fp.difference(self.polys[room].buffer(OBJECT_TOLERANCE, join_style="mitre"))
+            if room not in margins:
+                margins[room] = self.polys[room].buffer(OBJECT_TOLERANCE, join_style="mitre")
+            out = placed.fp.difference(margins[room])
             if out.area > OVERHANG_AREA:
                 self.add("object-in-room", obj.id, f"footprint leaves room {room!r} "
                          f"({out.area:.4f} m² outside, beyond {OBJECT_TOLERANCE * 100:.0f} cm)")
@@ -684,9 +691,14 @@ def _loader_traps(data: dict[str, Any], source: str) -> tuple[list[Problem], set
 
 def validate_house(house: House | dict[str, Any], *, source: str = "") -> list[Problem]:
     """Every problem of one house (a :class:`House` or the parsed JSON), errors and warnings."""
+    return _checked(house, source)[0]
+
+
+def _checked(house: House | dict[str, Any], source: str) -> tuple[list[Problem], House | None]:
+    """:func:`validate_house`'s problems and the parsed house (None when the schema failed)."""
     data = house.to_dict() if isinstance(house, House) else house
     if not isinstance(data, dict):
-        return [Problem("schema", "house", "a house is a JSON object", source)]
+        return [Problem("schema", "house", "a house is a JSON object", source)], None
     traps, covered = _loader_traps(data, source)
     try:
         parsed = House.model_validate(data)
@@ -695,10 +707,10 @@ def validate_house(house: House | dict[str, Any], *, source: str = "") -> list[P
             Problem("schema", ".".join(str(p) for p in e["loc"]) or "house", e["msg"], source)
             for e in exc.errors(include_url=False)
             if not any(tuple(e["loc"][:len(c)]) == c for c in covered)
-        ]
+        ], None
     if traps:
-        return traps
-    return _HouseCheck(parsed, source).run()
+        return traps, parsed
+    return _HouseCheck(parsed, source).run(), parsed
 
 
 def _read(path: Path) -> Any:
@@ -716,11 +728,10 @@ def validate_building(manifest_path: str | os.PathLike[str]) -> list[Problem]:
     houses: dict[int, House] = {}
     for floor in manifest.floors:
         file = path.parent / floor.house
-        data = _read(file)
-        found = validate_house(data, source=str(file))
+        found, parsed = _checked(_read(file), str(file))
         problems += found
-        if not any(p.rule == "schema" for p in found):
-            houses[floor.index] = House.model_validate(data)
+        if parsed is not None and not any(p.rule == "schema" for p in found):
+            houses[floor.index] = parsed
     return problems + _core_problems(manifest, houses, str(path))
 
 
