@@ -130,12 +130,26 @@ def first_round_regions(layout: FloorLayout, graph: RoomGraph) -> dict[str, tupl
         rows, cols = np.nonzero(g == i)
         if rows.size == 0:
             continue
-        cells = unary_union(
-            [box(ox + c * s, oy + r * s, ox + (c + 1) * s, oy + (r + 1) * s) for r, c in zip(rows, cols)]
-        )
+        cells = unary_union(_row_runs(g == i, ox, oy, s))
         poly = cells if isinstance(cells, Polygon) else max(cells.geoms, key=lambda p: p.area)
         pole = polylabel(poly, tolerance=s / 2)
         out[name] = (float(rows.size * s * s), (float(pole.x), float(pole.y)))
+    return out
+
+
+def _row_runs(mask: np.ndarray, ox: float, oy: float, s: float) -> list[Polygon]:
+    """The cells of ``mask`` as one box per run of cells along a row: the same region as a box
+    per cell from a tenth of the boxes (74 → 8 ms a floor: with a box per cell, the regions took
+    most of the time outside the solver). The union may start its boundary elsewhere, which can
+    move the pole of inaccessibility when two candidates tie (one floor in thirty)."""
+    out = []
+    h, w = mask.shape
+    padded = np.zeros((h, w + 2), dtype=np.int8)
+    padded[:, 1:-1] = mask
+    edges = np.diff(padded, axis=1)
+    for r, c0 in zip(*np.nonzero(edges == 1)):
+        c1 = c0 + int(np.argmax(edges[r, c0 + 1:] == -1)) + 1
+        out.append(box(ox + c0 * s, oy + r * s, ox + c1 * s, oy + (r + 1) * s))
     return out
 
 

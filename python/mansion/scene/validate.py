@@ -61,6 +61,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import shapely
 from pydantic import ValidationError
 from shapely.geometry import Point, Polygon
 from shapely.geometry.base import BaseGeometry
@@ -261,6 +262,7 @@ class _HouseCheck:
             if not poly.is_valid or poly.area <= EPS:
                 self.add("room-polygon", room.id, "floor polygon is not a simple polygon with area")
                 continue
+            shapely.prepare(poly)  # many point-in-room tests follow
             polys[room.id] = poly
         ids = list(polys)
         tree = STRtree([polys[i] for i in ids])
@@ -459,8 +461,10 @@ class _HouseCheck:
                 continue  # an unknown asset: reported under object-asset
             if room not in margins:
                 margins[room] = self.polys[room].buffer(OBJECT_TOLERANCE, join_style="mitre")
-            out = placed.fp.difference(margins[room])
-            if out.area > OVERHANG_AREA:
+                shapely.prepare(margins[room])
+            # the difference only for the few footprints not plainly inside (a prepared test)
+            out = None if margins[room].contains(placed.fp) else placed.fp.difference(margins[room])
+            if out is not None and out.area > OVERHANG_AREA:
                 self.add("object-in-room", obj.id, f"footprint leaves room {room!r} "
                          f"({out.area:.4f} m² outside, beyond {OBJECT_TOLERANCE * 100:.0f} cm)")
             floor[room].append(placed)
@@ -507,11 +511,12 @@ class _HouseCheck:
         top = parent.obj.position.y + parent.height / 2
         base = parent.obj.position.y - parent.height / 2
         area = parent.fp.buffer(OBJECT_TOLERANCE, join_style="mitre")
+        shapely.prepare(area)
         for child in parent.obj.children:
             c = self._placed(child, db)
             if c is None:
                 continue
-            if c.fp.difference(area).area > 1e-6:
+            if not area.contains(c.fp) and c.fp.difference(area).area > 1e-6:
                 self.add("object-child", child.id, f"footprint leaves its receptacle {parent.obj.id!r}")
             bottom = child.position.y - c.height / 2
             # on its receptacle's top (ProcTHOR's settle up to a few cm above it), or inside it
