@@ -376,12 +376,15 @@ def blocked_entrances(
     out = []
     for rid, ways in room_entrances(house).items():
         poly = polys.get(rid)
-        if poly is None:
+        if poly is None or not ways:
             continue
+        # each doorstep lies in the room: cut the floor-wide spaces to it once, not per door
+        bare_here = bare.intersection(poly)
+        full_here = full.intersection(poly) if full is not None else None
         for e in ways:
             step = LineString([e.a, e.b]).buffer(c + _DOORSTEP).intersection(poly)
-            if bare.intersection(step).area <= _AREA:
+            if bare_here.intersection(step).area <= _AREA:
                 continue
-            if full is None or full.intersection(step).area <= _AREA:
+            if full_here is None or full_here.intersection(step).area <= _AREA:
                 out.append((rid, e.id))
     return out
