@@ -76,18 +76,18 @@ Rect = tuple[float, float, float, float, float, float]
 def _rectangle(shape: shapely.Geometry) -> Rect | None:
     """(centre x, y, unit axis x, y, half length, half width) of a rectangle (a footprint), or
     None for any other shape."""
-    if shape.geom_type != "Polygon" or len(shape.interiors) > 0:
+    if shape.geom_type != "Polygon":
         return None
-    xy = np.asarray(shape.exterior.coords)
-    if len(xy) != 5:
+    xy = shapely.get_coordinates(shape)
+    if len(xy) != 5:  # four corners and the closing point, no holes
         return None
-    p0, p1, p2, p3 = xy[0], xy[1], xy[2], xy[3]
-    u, v = p1 - p0, p3 - p0
-    lu, lv = math.hypot(*u), math.hypot(*v)
-    if lu <= 0 or lv <= 0 or abs(float(u @ v)) > 1e-9 * lu * lv or np.abs(p0 + u + v - p2).max() > 1e-9:
+    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = xy[:4].tolist()
+    ux, uy, vx, vy = x1 - x0, y1 - y0, x3 - x0, y3 - y0
+    lu, lv = math.hypot(ux, uy), math.hypot(vx, vy)
+    if (lu <= 0 or lv <= 0 or abs(ux * vx + uy * vy) > 1e-9 * lu * lv
+            or abs(x0 + ux + vx - x2) > 1e-9 or abs(y0 + uy + vy - y2) > 1e-9):
         return None
-    c = (p0 + p2) / 2
-    return float(c[0]), float(c[1]), float(u[0] / lu), float(u[1] / lu), lu / 2, lv / 2
+    return (x0 + x2) / 2, (y0 + y2) / 2, ux / lu, uy / lu, lu / 2, lv / 2
 
 
 def _distance2(rect: Rect, x: NDArray[np.float64], y: NDArray[np.float64]) -> NDArray[np.float64]:
