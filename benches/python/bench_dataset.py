@@ -18,6 +18,8 @@ the measured rate. Run from the repository root:
 
     PYTHONPATH=python python benches/python/bench_dataset.py --n 48 --workers 2
     PYTHONPATH=python python benches/python/bench_dataset.py --n 48 --engines local --no-validate
+    # the same figures for a dataset made by `mansion dataset` (a resumed run: give its wall time)
+    PYTHONPATH=python python benches/python/bench_dataset.py --summarise world --wall 1800
 """
 
 from __future__ import annotations
@@ -57,6 +59,49 @@ def _objects_share(root: Path, records: list[dict[str, Any]], sample: int) -> di
     return {"buildings": len(chosen), "scenes_without_objects": round(bare, 2), "scenes_with_objects": round(full, 2)}
 
 
+def figures(records: list[dict[str, Any]], wall: float, load: float | None, failures: int) -> dict[str, Any]:
+    """The throughput figures of a dataset's building records made in ``wall`` seconds."""
+    stages: dict[str, float] = defaultdict(float)
+    cpu_stages: dict[str, float] = defaultdict(float)
+    for r in records:
+        for k, v in r["timings"].items():
+            stages[k] += v
+        for k, v in r.get("cpu_timings", {}).items():
+            cpu_stages[k] += v
+    cpu_seconds = sum(r.get("cpu_seconds", 0.0) for r in records)
+    worker_seconds = sum(r["seconds"] for r in records)
+    floors = sum(r["floors"] for r in records)
+    by_floors: dict[int, list[float]] = defaultdict(list)
+    for r in records:
+        by_floors[r["floors"]].append(r["seconds"])
+    return {
+        # other work on the machine: 1-minute load average at the start and the end
+        "load_average": [round(load, 1), round(os.getloadavg()[0], 1)] if load is not None else None,
+        "buildings": len(records),
+        "failures": failures,
+        "floors": floors,
+        "wall_seconds": round(wall, 1),
+        "buildings_per_minute": round(60 * len(records) / wall, 2),
+        "minutes_for_1000": round(1000 * wall / max(len(records), 1) / 60, 1),
+        "worker_seconds_per_floor": round(worker_seconds / max(floors, 1), 2),
+        "worker_seconds_per_building": round(worker_seconds / max(len(records), 1), 2),
+        "median_seconds_by_floors": {k: round(statistics.median(v), 2) for k, v in sorted(by_floors.items())},
+        "stage_share_percent": {
+            k: round(100 * stages[k] / max(worker_seconds, 1e-9), 1) for k in (*STAGES, "solver") if k in stages
+        },
+        # CPU time is what a busy machine does not inflate: the time of 1,000 buildings on
+        # this machine's two cores with nothing else running, from the CPU the jobs used
+        "cpu_seconds_per_building": round(cpu_seconds / max(len(records), 1), 2),
+        "cpu_seconds_per_floor": round(cpu_seconds / max(floors, 1), 2),
+        "idle_minutes_for_1000_on_2_cores": round(1000 * cpu_seconds / max(len(records), 1) / 2 / 60, 1),
+        "cpu_stage_share_percent": {
+            k: round(100 * cpu_stages[k] / max(cpu_seconds, 1e-9), 1)
+            for k in (*STAGES, "solver") if k in cpu_stages
+        },
+        "peak_memory_mb_per_worker": max((r["peak_memory_mb"] for r in records), default=0.0),
+    }
+
+
 def run(engine: str, n: int, workers: int, settings: DatasetSettings, sample: int) -> dict[str, Any]:
     root = Path(tempfile.mkdtemp(prefix=f"bench-dataset-{engine}-"))
     try:
@@ -65,46 +110,7 @@ def run(engine: str, n: int, workers: int, settings: DatasetSettings, sample: in
         summary = make_dataset(root / "ds", n, settings, workers=workers, engine=engine)
         wall = time.perf_counter() - start
         records = load_records(root / "ds")
-        stages: dict[str, float] = defaultdict(float)
-        cpu_stages: dict[str, float] = defaultdict(float)
-        for r in records:
-            for k, v in r["timings"].items():
-                stages[k] += v
-            for k, v in r.get("cpu_timings", {}).items():
-                cpu_stages[k] += v
-        cpu_seconds = sum(r.get("cpu_seconds", 0.0) for r in records)
-        worker_seconds = sum(r["seconds"] for r in records)
-        floors = sum(r["floors"] for r in records)
-        by_floors: dict[int, list[float]] = defaultdict(list)
-        for r in records:
-            by_floors[r["floors"]].append(r["seconds"])
-        result = {
-            "engine": engine,
-            # other work on the machine: 1-minute load average at the start and the end
-            "load_average": [round(load, 1), round(os.getloadavg()[0], 1)],
-            "buildings": summary["buildings"],
-            "failures": summary["failures"],
-            "floors": floors,
-            "wall_seconds": round(wall, 1),
-            "buildings_per_minute": round(60 * len(records) / wall, 2),
-            "minutes_for_1000": round(1000 * wall / max(len(records), 1) / 60, 1),
-            "worker_seconds_per_floor": round(worker_seconds / max(floors, 1), 2),
-            "worker_seconds_per_building": round(worker_seconds / max(len(records), 1), 2),
-            "median_seconds_by_floors": {k: round(statistics.median(v), 2) for k, v in sorted(by_floors.items())},
-            "stage_share_percent": {
-                k: round(100 * stages[k] / max(worker_seconds, 1e-9), 1) for k in (*STAGES, "solver") if k in stages
-            },
-            # CPU time is what a busy machine does not inflate: the time of 1,000 buildings on
-            # this machine's two cores with nothing else running, from the CPU the jobs used
-            "cpu_seconds_per_building": round(cpu_seconds / max(len(records), 1), 2),
-            "cpu_seconds_per_floor": round(cpu_seconds / max(floors, 1), 2),
-            "idle_minutes_for_1000_on_2_cores": round(1000 * cpu_seconds / max(len(records), 1) / 2 / 60, 1),
-            "cpu_stage_share_percent": {
-                k: round(100 * cpu_stages[k] / max(cpu_seconds, 1e-9), 1)
-                for k in (*STAGES, "solver") if k in cpu_stages
-            },
-            "peak_memory_mb_per_worker": max((r["peak_memory_mb"] for r in records), default=0.0),
-        }
+        result = {"engine": engine, **figures(records, wall, load, summary["failures"])}
         if sample and engine == "local":
             result["objects"] = _objects_share(root / "ds", records, sample)
         return result
@@ -121,7 +127,17 @@ def main() -> None:
     parser.add_argument("--no-validate", action="store_true")
     parser.add_argument("--objects-sample", type=int, default=6)
     parser.add_argument("--json", type=Path, help="also write the results here")
+    parser.add_argument("--summarise", type=Path, metavar="DIR",
+                        help="report the figures of a dataset already made in DIR instead")
+    parser.add_argument("--wall", type=float, help="with --summarise: the wall-clock seconds it took")
     args = parser.parse_args()
+    if args.summarise:
+        failures = sum(1 for _ in (args.summarise / "failures").glob("*.json")) \
+            if (args.summarise / "failures").is_dir() else 0
+        records = load_records(args.summarise)
+        wall = args.wall or max(sum(r["seconds"] for r in records) / max(args.workers, 1), 1e-9)
+        print(json.dumps(figures(records, wall, None, failures), indent=1))
+        return
     settings = DatasetSettings.parse(seed=args.seed, validate=not args.no_validate)
     results = []
     for engine in args.engines.split(","):
