@@ -180,6 +180,26 @@ def test_numbered_ordinal_and_synonym_names() -> None:
     assert ("master_room_1", "position", "southeast", ()) in found
 
 
+def test_hyphenated_and_labelled_numbers() -> None:
+    two_balconies = [*FLAT, KnownRoom("balcony_8", "balcony")]
+    text = "Balcony-1 is located at the north east corner. Balcony-2 is located at the south west corner."
+    assert facts(text, two_balconies) == {
+        ("balcony_5", "position", "northeast", ()), ("balcony_8", "position", "southwest", ()),
+    }
+    text = "Balcony 1: east facing, adjoining the living room. Balcony 2: south facing off the master room."
+    found = facts(text, two_balconies)
+    assert ("balcony_5", "position", "east", ()) in found
+    assert ("balcony_8", "position", "south", ()) in found
+    assert ("balcony_5", "position", "south", ()) not in found
+
+
+def test_a_compass_word_in_front_of_the_subject() -> None:
+    assert facts("The south facing balcony offers about 50 square feet of space.") == {
+        ("balcony_5", "position", "south", ()),
+    }
+    assert facts("The kitchen is on the eastside of the house.") == {("kitchen_2", "position", "east", ())}
+
+
 def test_second_bedroom_counts_the_master_first() -> None:
     text = "The second bedroom is in the northeast corner. The third bedroom is in the northwest corner."
     assert facts(text, TWO_COMMONS) == {
@@ -369,3 +389,15 @@ def test_generate_honours_a_compass_word() -> None:
     # a description without position words leaves the record empty
     plain = generate_building("a small office", seed=0, floors=1)
     assert plain.floors[0].position_words == []
+
+
+def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
+    from mansion.eval.text_placement import _agreement
+
+    a = np.zeros((4, 4), dtype=int)
+    a[:, :2], a[:, 2:] = 1, 2
+    b = a.copy()
+    c = a[:, ::-1].copy()
+    preds = [c, a, b]
+    assert _agreement(1, preds) > _agreement(0, preds)
+    assert _agreement(0, [a]) == 0.0

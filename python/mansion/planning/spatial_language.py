@@ -155,6 +155,7 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\b(?:center|centre|middle)\b", " centre "),
     (r"\b(up\s*side|upside)\b", " upside "),
     (r"\b(down\s*side)\b", " downside "),
+    (r"\b(north|south|east|west)side\b", r" \1 side "),
     (r"\b(left\s*side|leftside)\b", " left side "),
     (r"\b(right\s*side|rightside)\b", " right side "),
     (r"\bright\s+(?=next|by|beside|above|below|behind|at|in|on|off|outside|near)", " "),
@@ -280,7 +281,8 @@ def _lexicon(types: Sequence[str]) -> _Lexicon:
         words.setdefault(name, kind)
     # longest alternatives first so "master bedroom" wins over "master"
     alternatives = sorted(words, key=lambda w: (-len(w), w))
-    number = r"(?:\s*(?:no\.?|#)?\s*(\d{1,2}|i{1,3}|iv)\b(?!\s*(?:'|\"|x\b|\*|:|×|by\b|ft\b|feet\b|foot\b|m\b|met|sq|square|%|\.\d|/)))?"
+    # "balcony 2", "balcony-2", "bath #2", "Balcony 2: south facing" (a label, not a ratio)
+    number = r"(?:\s*-?\s*(?:no\.?|#)?\s*(\d{1,2}|i{1,3}|iv)\b(?!\s*(?:'|\"|x\b|\*|:\s*\d|×|by\b|ft\b|feet\b|foot\b|m\b|met|sq|square|%|\.\d|/)))?"
     ordinal = r"(?:\b(first|second|third|fourth|fifth|1st|2nd|3rd|4th|other|another)\s+)?"
     body = "|".join(f"(?:{w})" for w in alternatives)
     pattern = re.compile(ordinal + r"\b(" + body + r")(?:'s)?(?:\b|(?=\d))" + number)
@@ -297,7 +299,9 @@ def _type_of(lex: _Lexicon, word: str) -> str:
 # -- clauses and subjects -----------------------------------------------------------------------
 
 _SUBJECT_LEAD = re.compile(
-    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
+    # "The D:south facing R0 offers ...": a compass word in front of the room is about it
+    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|D:\w+|facing|"
+    r"\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
 )
 _PRONOUN = re.compile(r"^\s*(?:it|its|it's|this|the\s+room|this\s+room|the\s+size|size|which|they|their)\b")
 _PLACE = (

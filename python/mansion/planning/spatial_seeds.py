@@ -80,6 +80,8 @@ class SeedWeights:
     """Weights of the seed solve's terms (all costs are in units of the region's size)."""
 
     position: float = 4.0
+    #: a corner names both coordinates: the most precise thing the text says, held more firmly
+    corner: float = 4.0
     centre: float = 1.0
     exterior: float = 1.0
     relation: float = 4.0
@@ -196,7 +198,7 @@ def place_seeds(
         for s in positions:
             assert s.direction is not None
             dx, dy = DIRECTIONS[s.direction]
-            weight = w.exterior if s.kind == "exterior" else w.position
+            weight = w.exterior if s.kind == "exterior" else w.corner if dx and dy else w.position
             if s.direction == "centre":
                 unary[k] += w.centre * ((X - cx) ** 2 + (Y - cy) ** 2) / scale**2
                 continue
