@@ -77,9 +77,20 @@ def main() -> None:
         for r in plan.rooms:
             by_type[r.type].append(node_id(r))
         pe = []
+        rr_, cc_ = np.nonzero(p.free.mask)
+        mid = ((cc_.min() + cc_.max() + 1) / 2, (rr_.min() + rr_.max() + 1) / 2)
         for room in p.rooms:
             st = p.reading.about(room.id)
             k = _kind(st)
+            if k in ("corner", "side"):
+                # does every position word agree with the true centroid's half of the plan?
+                tx_, ty_ = true[room.id]
+                good = all(
+                    (not DIRECTIONS[s.direction][0] or (tx_ - mid[0]) * DIRECTIONS[s.direction][0] > 0)
+                    and (not DIRECTIONS[s.direction][1] or (ty_ - mid[1]) * DIRECTIONS[s.direction][1] > 0)
+                    for s in st if s.kind == "position" and s.direction and s.direction != "centre"
+                )
+                k = f"{k}{'' if good else '-wrong'}"
             sx, sy = seeds[room.id]
             tx, ty = true[room.id]
             e = math.hypot(sx - tx, sy - ty)
@@ -111,7 +122,7 @@ def main() -> None:
     print(f"{len(ids)} plans")
     print(f"{'kind':10s} {'n':>5s} {'mean':>6s} {'median':>6s} {'p90':>6s}  mean|dx| mean|dy|  mean dx  mean dy (cells, seed - true)")
     allv = []
-    for k in ("corner", "side", "centre", "relation", "none"):
+    for k in ("corner", "corner-wrong", "side", "side-wrong", "centre", "relation", "none"):
         v = errs.get(k, [])
         allv += v
         if not v:
