@@ -262,6 +262,35 @@ def test_seeds_follow_positions_and_relations() -> None:
     assert set(report.defaults) == {"living_room_0", "common_room_4"}
 
 
+def test_an_unplaced_room_is_seeded_amid_its_adjacent_rooms() -> None:
+    from mansion.planning.spatial_seeds import SeedWeights
+
+    free = FreeGrid(np.ones((30, 40), dtype=bool))
+    text = "The kitchen is in the northeast corner. The master bedroom is in the northwest corner."
+    reading = read_description(text, FLAT)
+    adjacency = [("bathroom_3", "kitchen_2"), ("bathroom_3", "master_room_1"), ("bathroom_3", "living_room_0")]
+    seeds, _ = place_seeds(reading, rooms_of(FLAT), free, adjacency, weights=SeedWeights(unplaced_to_neighbours=True))
+    bx, by = seeds["bathroom_3"]
+    kx, mx = seeds["kitchen_2"][0], seeds["master_room_1"][0]
+    # between its two placed neighbours (the hub is left out when there are others), at their height
+    assert abs(bx - (kx + mx) / 2) <= 2.5
+    assert abs(by - (seeds["kitchen_2"][1] + seeds["master_room_1"][1]) / 2) <= 2.5
+    # and never on another room's seed
+    assert all(abs(bx - x) >= 1 or abs(by - y) >= 1 for rid, (x, y) in seeds.items() if rid != "bathroom_3")
+
+
+def test_a_firmer_corner_keeps_its_room_in_the_corner() -> None:
+    from mansion.planning.spatial_seeds import SeedWeights
+
+    free = FreeGrid(np.ones((30, 40), dtype=bool))
+    # the kitchen's corner and its relation pull apart: a firmer corner keeps it nearer the corner
+    text = "The kitchen is in the northeast corner, west of the bathroom. The bathroom is in the northwest corner."
+    reading = read_description(text, FLAT)
+    soft, _ = place_seeds(reading, rooms_of(FLAT), free, weights=SeedWeights(corner=4.0))
+    firm, _ = place_seeds(reading, rooms_of(FLAT), free, weights=SeedWeights(corner=16.0))
+    assert firm["kitchen_2"][0] > soft["kitchen_2"][0]
+
+
 def test_same_type_rooms_matched_by_stated_area() -> None:
     known = [KnownRoom("living_room_0", "living_room"), KnownRoom("common_room_1", "common_room"), KnownRoom("common_room_2", "common_room")]
     rooms = [SeedRoom("living_room_0", "living_room", 60), SeedRoom("common_room_1", "common_room", 9), SeedRoom("common_room_2", "common_room", 18)]
