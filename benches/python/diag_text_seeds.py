@@ -3,7 +3,9 @@
 For each plan and room, compares the seed that ``--planner text`` would start from with the room's
 true centroid (cells), and groups the error by what the text said about the room:
 
-- ``corner`` / ``side`` / ``centre``: its strongest position statement;
+- ``corner`` / ``side`` / ``centre``: its strongest position statement (``corner-wrong`` /
+  ``side-wrong`` when a compass word puts it in the other half of the plan from its true centroid:
+  the text's error, which no seed solve can mend);
 - ``relation``: relations only; ``none``: nothing read about it;
 - ``swapped``: a room of a type the plan has twice or more, whose seed is nearer another same-type
   room's true centroid than its own (a matching error, counted on top of its kind).
@@ -12,7 +14,11 @@ It also checks the units the seed solve relies on: stated width/depth (feet) aga
 room box (cells), on both axes, so the feet → cells scale and which axis "wide" is are measured,
 not assumed; and each position word against the true centroid (is "north" a smaller image row?).
 
-    PYTHONPATH=python python benches/python/diag_text_seeds.py --data ../shared/data/t2d-dev --limit 150
+    PYTHONPATH=python python benches/python/diag_text_seeds.py --data ../shared/data/t2d-dev --limit 150 \
+        --weights corner=16,unplaced_to_neighbours=1
+
+``--weights`` overrides fields of :class:`mansion.planning.spatial_seeds.SeedWeights` (the seed
+sets ``--planner text`` tries are :data:`mansion.eval.text_placement.VARIANTS`).
 
 Ground truth is read here only to score; the seeds come from ``text_problem``/``place_seeds``.
 """

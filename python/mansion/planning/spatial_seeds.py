@@ -89,8 +89,6 @@ class SeedWeights:
     adjacency: float = 1.0
     next_to: float = 1.0
     overlap: float = 2.0
-    #: a directional relation also pulls the two rooms' boxes until they touch
-    order_touch: float = 0.0
     fit: float = 2.0
     #: how far apart (in half-sizes) a relation wants two rooms: 1.0 = boxes just touching
     gap: float = 0.6
@@ -242,9 +240,6 @@ def place_seeds(
                     continue
                 for j in js:
                     pairs.append((i, j, "order", w.relation, d))
-                    if w.order_touch:
-                        # "with the common room to the south" names a neighbour: near, not just south
-                        pairs.append((i, j, "touch", w.order_touch, (0, 0)))
     for a, b in adjacency:
         if a in index and b in index and a != b:
             pairs.append((index[a], index[b], "touch", w.adjacency, (0, 0)))
