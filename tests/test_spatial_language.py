@@ -180,6 +180,28 @@ def test_numbered_ordinal_and_synonym_names() -> None:
     assert ("master_room_1", "position", "southeast", ()) in found
 
 
+def test_rooms_touching_the_subject_on_named_sides() -> None:
+    text = "The bathroom touches the living room on the south and west sides and the exterior wall on the east."
+    assert facts(text) == {
+        ("living_room_0", "relation", "south_of", ("bathroom_3",)),
+        ("living_room_0", "relation", "west_of", ("bathroom_3",)),
+        ("bathroom_3", "exterior", "east", ()),
+    }
+    text = "The kitchen is in the southwest corner. It is surrounded on the north and east sides by the living room."
+    assert facts(text) == {
+        ("kitchen_2", "position", "southwest", ()),
+        ("living_room_0", "relation", "north_of", ("kitchen_2",)),
+        ("living_room_0", "relation", "east_of", ("kitchen_2",)),
+    }
+
+
+def test_a_compass_word_before_exterior_wall_is_an_exterior_wall() -> None:
+    assert facts("The kitchen has a small south exterior wall.") == {("kitchen_2", "exterior", "south", ())}
+    assert facts("The bathroom borders the north and east exterior walls.") == {
+        ("bathroom_3", "exterior", "north", ()), ("bathroom_3", "exterior", "east", ()),
+    }
+
+
 def test_hyphenated_and_labelled_numbers() -> None:
     two_balconies = [*FLAT, KnownRoom("balcony_8", "balcony")]
     text = "Balcony-1 is located at the north east corner. Balcony-2 is located at the south west corner."

@@ -411,6 +411,7 @@ _LINKS = frozenset(
     "into onto toward towards through via is are was were leads opens faces facing overlooks "
     "adjacent adjoining next nearby connects connected accessed accessible entrance bordered "
     "neighbored neighboured followed after before above below under over upside downside , "
+    "touches touching touch borders bordering surrounded surrounding joining joins "
     "both all also then while where which that".split()
 )
 
@@ -546,6 +547,16 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             for o in others:
                 out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
+    # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
+    for m in re.finditer(r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")", text):
+        others = rooms_in(m.group(m.lastindex or 0))
+        if not others or not free(m.start(), m.end()):
+            continue
+        for d in _dirs(m, text):
+            if d != "centre":
+                for o in others:
+                    out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
+        used.append((m.start(), m.end()))
     pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
     for m in re.finditer(pat_before, text):
         others = rooms_in(m.group(m.lastindex or 0))
@@ -563,6 +574,12 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if free(m.start(), m.end()):
             for d in _dirs(m, text):
                 add("exterior", m, direction=d)
+    # "a small D:south exterior wall", "the D:north and D:east exterior walls"
+    for m in re.finditer(r"(?:" + _DD + r")\s+(?:exterior|outside|external)\s+walls?\b", text):
+        if free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                if d != "centre":
+                    add("exterior", m, direction=d)
     for m in re.finditer(r"(?:to\s+the\s+)?(?:" + _DD + r")\s+(?:is|are)\s+(?:the\s+)?(?:house\s+|unit\s+|building\s+)?(?:exterior|outside)", text):
         if free(m.start(), m.end()):
             for d in _dirs(m, text):
