@@ -548,25 +548,18 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
                 out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
     # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
-    for m in re.finditer(r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")", text):
-        others = rooms_in(m.group(m.lastindex or 0))
-        if not others or not free(m.start(), m.end()):
-            continue
-        for d in _dirs(m, text):
-            if d != "centre":
-                for o in others:
-                    out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
-        used.append((m.start(), m.end()))
+    by_sides = r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")"
     pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
-    for m in re.finditer(pat_before, text):
-        others = rooms_in(m.group(m.lastindex or 0))
-        if not others or not free(m.start(), m.end()):
-            continue
-        for d in _dirs(m, text):
-            if d != "centre":
-                for o in others:
-                    out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
-        used.append((m.start(), m.end()))
+    for pattern in (by_sides, pat_before):
+        for m in re.finditer(pattern, text):
+            others = rooms_in(m.group(m.lastindex or 0))
+            if not others or not free(m.start(), m.end()):
+                continue
+            for d in _dirs(m, text):
+                if d != "centre":
+                    for o in others:
+                        out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
+            used.append((m.start(), m.end()))
 
     # 4. Exterior walls: "D:south wall is exterior", "exterior to the D:north, D:east", "outside
     # wall(s) to the D:east and D:west", "house exterior to the D:west".
