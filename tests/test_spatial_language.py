@@ -180,6 +180,48 @@ def test_numbered_ordinal_and_synonym_names() -> None:
     assert ("master_room_1", "position", "southeast", ()) in found
 
 
+def test_rooms_touching_the_subject_on_named_sides() -> None:
+    text = "The bathroom touches the living room on the south and west sides and the exterior wall on the east."
+    assert facts(text) == {
+        ("living_room_0", "relation", "south_of", ("bathroom_3",)),
+        ("living_room_0", "relation", "west_of", ("bathroom_3",)),
+        ("bathroom_3", "exterior", "east", ()),
+    }
+    text = "The kitchen is in the southwest corner. It is surrounded on the north and east sides by the living room."
+    assert facts(text) == {
+        ("kitchen_2", "position", "southwest", ()),
+        ("living_room_0", "relation", "north_of", ("kitchen_2",)),
+        ("living_room_0", "relation", "east_of", ("kitchen_2",)),
+    }
+
+
+def test_a_compass_word_before_exterior_wall_is_an_exterior_wall() -> None:
+    assert facts("The kitchen has a small south exterior wall.") == {("kitchen_2", "exterior", "south", ())}
+    assert facts("The bathroom borders the north and east exterior walls.") == {
+        ("bathroom_3", "exterior", "north", ()), ("bathroom_3", "exterior", "east", ()),
+    }
+
+
+def test_hyphenated_and_labelled_numbers() -> None:
+    two_balconies = [*FLAT, KnownRoom("balcony_8", "balcony")]
+    text = "Balcony-1 is located at the north east corner. Balcony-2 is located at the south west corner."
+    assert facts(text, two_balconies) == {
+        ("balcony_5", "position", "northeast", ()), ("balcony_8", "position", "southwest", ()),
+    }
+    text = "Balcony 1: east facing, adjoining the living room. Balcony 2: south facing off the master room."
+    found = facts(text, two_balconies)
+    assert ("balcony_5", "position", "east", ()) in found
+    assert ("balcony_8", "position", "south", ()) in found
+    assert ("balcony_5", "position", "south", ()) not in found
+
+
+def test_a_compass_word_in_front_of_the_subject() -> None:
+    assert facts("The south facing balcony offers about 50 square feet of space.") == {
+        ("balcony_5", "position", "south", ()),
+    }
+    assert facts("The kitchen is on the eastside of the house.") == {("kitchen_2", "position", "east", ())}
+
+
 def test_second_bedroom_counts_the_master_first() -> None:
     text = "The second bedroom is in the northeast corner. The third bedroom is in the northwest corner."
     assert facts(text, TWO_COMMONS) == {
@@ -240,6 +282,35 @@ def test_seeds_follow_positions_and_relations() -> None:
     assert not report.unmet
     # rooms the text never places still get a seed, and are named as defaults
     assert set(report.defaults) == {"living_room_0", "common_room_4"}
+
+
+def test_an_unplaced_room_is_seeded_amid_its_adjacent_rooms() -> None:
+    from mansion.planning.spatial_seeds import SeedWeights
+
+    free = FreeGrid(np.ones((30, 40), dtype=bool))
+    text = "The kitchen is in the northeast corner. The master bedroom is in the northwest corner."
+    reading = read_description(text, FLAT)
+    adjacency = [("bathroom_3", "kitchen_2"), ("bathroom_3", "master_room_1"), ("bathroom_3", "living_room_0")]
+    seeds, _ = place_seeds(reading, rooms_of(FLAT), free, adjacency, weights=SeedWeights(unplaced_to_neighbours=True))
+    bx, by = seeds["bathroom_3"]
+    kx, mx = seeds["kitchen_2"][0], seeds["master_room_1"][0]
+    # between its two placed neighbours (the hub is left out when there are others), at their height
+    assert abs(bx - (kx + mx) / 2) <= 2.5
+    assert abs(by - (seeds["kitchen_2"][1] + seeds["master_room_1"][1]) / 2) <= 2.5
+    # and never on another room's seed
+    assert all(abs(bx - x) >= 1 or abs(by - y) >= 1 for rid, (x, y) in seeds.items() if rid != "bathroom_3")
+
+
+def test_a_firmer_corner_keeps_its_room_in_the_corner() -> None:
+    from mansion.planning.spatial_seeds import SeedWeights
+
+    free = FreeGrid(np.ones((30, 40), dtype=bool))
+    # the kitchen's corner and its relation pull apart: a firmer corner keeps it nearer the corner
+    text = "The kitchen is in the northeast corner, west of the bathroom. The bathroom is in the northwest corner."
+    reading = read_description(text, FLAT)
+    soft, _ = place_seeds(reading, rooms_of(FLAT), free, weights=SeedWeights(corner=4.0))
+    firm, _ = place_seeds(reading, rooms_of(FLAT), free, weights=SeedWeights(corner=16.0))
+    assert firm["kitchen_2"][0] > soft["kitchen_2"][0]
 
 
 def test_same_type_rooms_matched_by_stated_area() -> None:
@@ -369,3 +440,15 @@ def test_generate_honours_a_compass_word() -> None:
     # a description without position words leaves the record empty
     plain = generate_building("a small office", seed=0, floors=1)
     assert plain.floors[0].position_words == []
+
+
+def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
+    from mansion.eval.text_placement import _agreement
+
+    a = np.zeros((4, 4), dtype=int)
+    a[:, :2], a[:, 2:] = 1, 2
+    b = a.copy()
+    c = a[:, ::-1].copy()
+    preds = [c, a, b]
+    assert _agreement(1, preds) > _agreement(0, preds)
+    assert _agreement(0, [a]) == 0.0

@@ -155,6 +155,7 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\b(?:center|centre|middle)\b", " centre "),
     (r"\b(up\s*side|upside)\b", " upside "),
     (r"\b(down\s*side)\b", " downside "),
+    (r"\b(north|south|east|west)side\b", r" \1 side "),
     (r"\b(left\s*side|leftside)\b", " left side "),
     (r"\b(right\s*side|rightside)\b", " right side "),
     (r"\bright\s+(?=next|by|beside|above|below|behind|at|in|on|off|outside|near)", " "),
@@ -280,7 +281,8 @@ def _lexicon(types: Sequence[str]) -> _Lexicon:
         words.setdefault(name, kind)
     # longest alternatives first so "master bedroom" wins over "master"
     alternatives = sorted(words, key=lambda w: (-len(w), w))
-    number = r"(?:\s*(?:no\.?|#)?\s*(\d{1,2}|i{1,3}|iv)\b(?!\s*(?:'|\"|x\b|\*|:|×|by\b|ft\b|feet\b|foot\b|m\b|met|sq|square|%|\.\d|/)))?"
+    # "balcony 2", "balcony-2", "bath #2", "Balcony 2: south facing" (a label, not a ratio)
+    number = r"(?:\s*-?\s*(?:no\.?|#)?\s*(\d{1,2}|i{1,3}|iv)\b(?!\s*(?:'|\"|x\b|\*|:\s*\d|×|by\b|ft\b|feet\b|foot\b|m\b|met|sq|square|%|\.\d|/)))?"
     ordinal = r"(?:\b(first|second|third|fourth|fifth|1st|2nd|3rd|4th|other|another)\s+)?"
     body = "|".join(f"(?:{w})" for w in alternatives)
     pattern = re.compile(ordinal + r"\b(" + body + r")(?:'s)?(?:\b|(?=\d))" + number)
@@ -297,7 +299,9 @@ def _type_of(lex: _Lexicon, word: str) -> str:
 # -- clauses and subjects -----------------------------------------------------------------------
 
 _SUBJECT_LEAD = re.compile(
-    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
+    # "The D:south facing R0 offers ...": a compass word in front of the room is about it
+    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|D:\w+|facing|"
+    r"\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
 )
 _PRONOUN = re.compile(r"^\s*(?:it|its|it's|this|the\s+room|this\s+room|the\s+size|size|which|they|their)\b")
 _PLACE = (
@@ -407,6 +411,7 @@ _LINKS = frozenset(
     "into onto toward towards through via is are was were leads opens faces facing overlooks "
     "adjacent adjoining next nearby connects connected accessed accessible entrance bordered "
     "neighbored neighboured followed after before above below under over upside downside , "
+    "touches touching touch borders bordering surrounded surrounding joining joins "
     "both all also then while where which that".split()
 )
 
@@ -542,16 +547,19 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             for o in others:
                 out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
+    # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
+    by_sides = r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")"
     pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
-    for m in re.finditer(pat_before, text):
-        others = rooms_in(m.group(m.lastindex or 0))
-        if not others or not free(m.start(), m.end()):
-            continue
-        for d in _dirs(m, text):
-            if d != "centre":
-                for o in others:
-                    out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
-        used.append((m.start(), m.end()))
+    for pattern in (by_sides, pat_before):
+        for m in re.finditer(pattern, text):
+            others = rooms_in(m.group(m.lastindex or 0))
+            if not others or not free(m.start(), m.end()):
+                continue
+            for d in _dirs(m, text):
+                if d != "centre":
+                    for o in others:
+                        out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
+            used.append((m.start(), m.end()))
 
     # 4. Exterior walls: "D:south wall is exterior", "exterior to the D:north, D:east", "outside
     # wall(s) to the D:east and D:west", "house exterior to the D:west".
@@ -559,6 +567,12 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if free(m.start(), m.end()):
             for d in _dirs(m, text):
                 add("exterior", m, direction=d)
+    # "a small D:south exterior wall", "the D:north and D:east exterior walls"
+    for m in re.finditer(r"(?:" + _DD + r")\s+(?:exterior|outside|external)\s+walls?\b", text):
+        if free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                if d != "centre":
+                    add("exterior", m, direction=d)
     for m in re.finditer(r"(?:to\s+the\s+)?(?:" + _DD + r")\s+(?:is|are)\s+(?:the\s+)?(?:house\s+|unit\s+|building\s+)?(?:exterior|outside)", text):
         if free(m.start(), m.end()):
             for d in _dirs(m, text):

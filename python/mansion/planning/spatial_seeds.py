@@ -80,6 +80,8 @@ class SeedWeights:
     """Weights of the seed solve's terms (all costs are in units of the region's size)."""
 
     position: float = 4.0
+    #: a corner names both coordinates: the most precise thing the text says, held more firmly
+    corner: float = 4.0
     centre: float = 1.0
     exterior: float = 1.0
     relation: float = 4.0
@@ -99,6 +101,8 @@ class SeedWeights:
     side_middle: float = 0.5
     #: seed the hub (largest room) in what the others leave rather than by its own words
     hub_leftover: bool = True
+    #: a room with no position of its own is seeded amid the rooms it is adjacent to
+    unplaced_to_neighbours: bool = False
 
 
 @dataclass
@@ -128,7 +132,9 @@ def _half_sizes(room: SeedRoom, statements: Sequence[Statement], cell: float) ->
     aspect = 1.0
     for s in statements:
         if s.kind == "size" and s.width and s.depth and s.oriented:
-            aspect = min(max(s.width / s.depth, 1 / 3), 3.0)
+            # stated sizes are rough (on the T2D dev plans their width : depth is off the true
+            # box's by a factor of 1.7 in a typical room): half of the stated shape is kept
+            aspect = min(max(s.width / s.depth, 1 / 3), 3.0) ** 0.5
             break
     w = math.sqrt(area * aspect)
     return (w / 2, area / w / 2)
@@ -196,7 +202,7 @@ def place_seeds(
         for s in positions:
             assert s.direction is not None
             dx, dy = DIRECTIONS[s.direction]
-            weight = w.exterior if s.kind == "exterior" else w.position
+            weight = w.exterior if s.kind == "exterior" else w.corner if dx and dy else w.position
             if s.direction == "centre":
                 unary[k] += w.centre * ((X - cx) ** 2 + (Y - cy) ** 2) / scale**2
                 continue
@@ -299,6 +305,27 @@ def place_seeds(
                 moved = True
         if not moved:
             break
+
+    if w.unplaced_to_neighbours:
+        # A room the text does not place ends the descent wherever the pushes left it, often
+        # at the edge, farther from its true place than the plan's centre is; the middle of the
+        # rooms it must touch is a better guess (the hub only when it is the only one).
+        seeded = np.zeros(X.size, dtype=bool)
+        for k in range(n):
+            if k == hub or any(s.kind in ("position", "exterior") for s in about[rooms[k].id]):
+                continue
+            nbrs = [index[b if a == rooms[k].id else a] for a, b in adjacency
+                    if rooms[k].id in (a, b) and a in index and b in index and a != b]
+            nbrs = [j for j in nbrs if j != hub] or nbrs
+            if not nbrs:
+                continue
+            tx, ty = float(np.mean([X[pos[j]] for j in nbrs])), float(np.mean([Y[pos[j]] for j in nbrs]))
+            near = np.zeros(X.size, dtype=bool)
+            for j in range(n):
+                if j != k:
+                    near |= (np.abs(X - X[pos[j]]) < 2) & (np.abs(Y - Y[pos[j]]) < 2)
+            pos[k] = int(np.argmin((X - tx) ** 2 + (Y - ty) ** 2 + np.where(near | seeded, 1e6, 0.0)))
+            seeded[pos[k]] = True
 
     if w.hub_leftover:
         # The hub takes what the other rooms leave: its seed is the free cell nearest the centre
