@@ -170,3 +170,24 @@ def test_a_round_that_cannot_meet_its_widths_is_cut_again_with_them_lowered() ->
     for room in layout.rooms:
         # lowered to 1.0 m, not dropped: no part narrower than an agent's passage
         assert narrow_area(Polygon(room.polygon, room.holes), 1.0) < SLACK, room.id
+
+
+def test_a_strict_budget_lowers_the_rules_only_once_backtracking_is_spent() -> None:
+    graph, footprint = office_floor()
+    ruled = with_widths(graph, room=2.0, hub=2.0)
+    args = {"cell_size": CELL, "retries": 3, "batch": 30, "rng_seed": 1}
+    at_once = mansion.solve_floor(ruled, footprint, **args)
+    # no strict budget: the same layout as lowering at once, to the byte
+    same = mansion.solve_floor(ruled, footprint, settings={"strict_backtracks": None}, **args)
+    assert same.model_dump_json(exclude={"diagnostics"}) == at_once.model_dump_json(exclude={"diagnostics"})
+    for budget in (0, 2):
+        layout = mansion.solve_floor(ruled, footprint, settings={"strict_backtracks": budget}, **args)
+        # the floor the strict solver cannot lay out is laid out, the failing round's rules lowered
+        # (the hub's round: no earlier round to re-cut, so at once whatever the budget)
+        assert [r.parent for r in layout.diagnostics.rounds if r.widths_relaxed] == ["corridor"]
+        again = mansion.solve_floor(ruled, footprint, settings={"strict_backtracks": budget}, **args)
+        assert again.model_dump_json(exclude={"diagnostics"}) == layout.model_dump_json(exclude={"diagnostics"})
+        for room in layout.rooms:
+            assert narrow_area(Polygon(room.polygon, room.holes), 1.0) < SLACK, room.id
+    with pytest.raises(mansion.InvalidInputError, match="strict_backtracks"):
+        mansion.solve_floor(ruled, footprint, settings={"strict_backtracks": -1}, **args)

@@ -32,6 +32,8 @@ def test_default_options_match_the_binding_contract() -> None:
         "fallback_samples": 400,
         "min_width": None,
         "relax_widths": True,
+        "max_backtracks": 8,
+        "strict_backtracks": None,
         "refine_walls": True,
         "growth": "balanced",
     }

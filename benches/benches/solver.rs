@@ -1,7 +1,8 @@
 //! Criterion benches of the solver, single-threaded (a one-thread rayon pool) so figures compare
 //! across machines: (a) 100 candidates of a 7-room plan on a 64×64 grid, (b) the whole 10 × 100
 //! budget of that plan, (c) `solve_floor` of a 500 m² office floor with about 20 rooms; (a) and (c)
-//! again with width rules (rooms ≥ 1.0 m, the hub ≥ 1.5 m, and a floor-wide rule of 1.0 m).
+//! again with width rules (rooms ≥ 1.0 m, the hub ≥ 1.5 m, and a floor-wide rule of 1.0 m); (c)'s
+//! strict attempt (no rule lowered) with wider rules, with the default and the generator's budget.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use mansion_benches::{office, t2d_like, with_widths};
@@ -96,6 +97,26 @@ fn bench(c: &mut Criterion) {
             })
         })
     });
+    // the first attempt of a generated floor with wider rules (rooms ≥ 1.5 m, the hub ≥ 2.0 m)
+    // than it can always meet: strictly (no rule lowered, 8 backtracks; a failure is timed like a
+    // success, the generator then starts the floor again), and as the generator runs it now (two
+    // backtracks under every rule, then a failing round's rules lowered where the search stands)
+    let (graph, fp, opts) = with_widths(office(), 1.5, 2.0, 2);
+    let strict = SolveOptions {
+        relax_widths: false,
+        ..opts.clone()
+    };
+    let budget = SolveOptions {
+        strict_backtracks: Some(2),
+        ..opts
+    };
+    for (name, o) in [("strict_min_width", &strict), ("strict_budget_min_width", &budget)] {
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                pool.install(|| solve_floor(black_box(&graph), &fp, o, &mut HeuristicPlanner).ok())
+            })
+        });
+    }
     g.finish();
 }
 

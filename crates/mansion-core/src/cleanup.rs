@@ -642,6 +642,81 @@ pub fn clean_widths(
     Some(s.thin.is_empty())
 }
 
+/// The first of `labels` (with their rules `widths[label]`, in cells) whose rule no candidate of
+/// this region can meet, or None when the region may hold them all.
+///
+/// A room that passes the width filter is made of `w × w` squares of its own (`w` its rule), so
+/// it holds at least one, inside the region, disjoint from every other room's: for every rule
+/// `w` present, the region's cells that some `w × w` square of region cells covers must number
+/// at least the sum of `r²` over the rooms whose rule `r` is `w` or more. Failing that, every
+/// candidate is rejected ("vanished", "narrower than the minimum width"), so a round can skip
+/// its whole search. A necessary condition only: passing it promises nothing. Fixed walls and
+/// reserved cells are ignored (which only makes it weaker), so the answer is exact.
+pub fn width_squares_misfit(region: &Region, labels: &[Label], widths: &[u16]) -> Option<Label> {
+    let rule = |l: Label| widths.get(l as usize).copied().unwrap_or(0) as usize;
+    let mut rules: Vec<usize> = labels.iter().map(|&l| rule(l)).filter(|&w| w > 1).collect();
+    if rules.is_empty() || region.is_empty() {
+        return None;
+    }
+    rules.sort_unstable();
+    rules.dedup();
+    let (x0, y0, x1, y1) = region.bbox;
+    let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
+    // side of the largest all-region square whose top-right corner (largest x and y) is each cell
+    let mut side = vec![0usize; bw * bh];
+    for y in 0..bh {
+        for x in 0..bw {
+            if !region.inside[(y + y0) * region.w + x + x0] {
+                continue;
+            }
+            side[y * bw + x] = if x == 0 || y == 0 {
+                1
+            } else {
+                1 + side[y * bw + x - 1]
+                    .min(side[(y - 1) * bw + x])
+                    .min(side[(y - 1) * bw + x - 1])
+            };
+        }
+    }
+    // per rule: corners of rule-sized squares summed over the box (prefix sums), then a cell is
+    // covered when a corner lies within w − 1 cells above and to its right
+    let mut corners = vec![0u32; (bw + 1) * (bh + 1)];
+    for &w in &rules {
+        for y in 0..bh {
+            let mut run = 0u32;
+            for x in 0..bw {
+                run += u32::from(side[y * bw + x] >= w);
+                corners[(y + 1) * (bw + 1) + x + 1] = corners[y * (bw + 1) + x + 1] + run;
+            }
+        }
+        let sum = |xa: usize, ya: usize, xb: usize, yb: usize| {
+            // corners in x in [xa, xb), y in [ya, yb)
+            corners[yb * (bw + 1) + xb] + corners[ya * (bw + 1) + xa]
+                - corners[ya * (bw + 1) + xb]
+                - corners[yb * (bw + 1) + xa]
+        };
+        let mut covered = 0usize;
+        for y in 0..bh {
+            for x in 0..bw {
+                if side[y * bw + x] > 0 && sum(x, y, (x + w).min(bw), (y + w).min(bh)) > 0 {
+                    covered += 1;
+                }
+            }
+        }
+        let mut need = 0usize;
+        for &l in labels {
+            let r = rule(l);
+            if r >= w {
+                need += r * r;
+                if need > covered {
+                    return Some(l);
+                }
+            }
+        }
+    }
+    None
+}
+
 /// The fill-then-clean cycle: fill holes, remove spurs, repeat until a pass removes no spur or
 /// [`MAX_CYCLES`] is reached; always ends on a fill so no cell is left empty when avoidable.
 /// Returns false when empty cells remain that no region room touches.
@@ -873,6 +948,24 @@ mod tests {
         assert_eq!(g.count(EMPTY), 0);
     }
 
+    /// A padded grid of up to `w_max − 1` × `h_max − 1` cells covered by random rectangles of
+    /// rooms 1..5, with empty cells where none falls.
+    fn random_rooms(rng: &mut impl rand::Rng, w_max: usize, h_max: usize) -> Grid {
+        let (w, h) = (rng.random_range(3..w_max), rng.random_range(3..h_max));
+        let mut g0 = Grid::new(w, h, EMPTY);
+        for _ in 0..rng.random_range(1..12) {
+            let (ax, ay) = (rng.random_range(0..w), rng.random_range(0..h));
+            let (bx, by) = (rng.random_range(ax..w), rng.random_range(ay..h));
+            let l = rng.random_range(1..6) as Label;
+            for y in ay..=by {
+                for x in ax..=bx {
+                    g0.set(x, y, l);
+                }
+            }
+        }
+        crate::region::pad(&g0, OUTSIDE)
+    }
+
     #[test]
     fn width_passes_on_random_grids_leave_no_thin_room_unreported() {
         use rand::{Rng, SeedableRng};
@@ -880,19 +973,7 @@ mod tests {
         let index = all_round();
         let mut cleaned = 0;
         for _ in 0..1500 {
-            let (w, h) = (rng.random_range(3..40), rng.random_range(3..30));
-            let mut g0 = Grid::new(w, h, EMPTY);
-            for _ in 0..rng.random_range(1..12) {
-                let (ax, ay) = (rng.random_range(0..w), rng.random_range(0..h));
-                let (bx, by) = (rng.random_range(ax..w), rng.random_range(ay..h));
-                let l = rng.random_range(1..6) as Label;
-                for y in ay..=by {
-                    for x in ax..=bx {
-                        g0.set(x, y, l);
-                    }
-                }
-            }
-            let mut g = crate::region::pad(&g0, OUTSIDE);
+            let mut g = random_rooms(&mut rng, 40, 30);
             let r = region_all(&g);
             let mut s = Scratch::new(g.cells.len());
             let walls = Walls::none(g.w, g.h);
@@ -920,6 +1001,57 @@ mod tests {
             cleaned += s.thin.is_empty() as usize;
         }
         assert!(cleaned > 500, "only {cleaned} grids came out clean");
+    }
+
+    #[test]
+    fn a_region_too_small_for_its_rooms_squares_is_a_misfit() {
+        // a corridor two cells wide holds no 3 x 3 square
+        let g = parse(&["00000000", "00000000"]);
+        let r = Region::of_label(&g, 0);
+        let mut widths = vec![0u16; 4];
+        widths[1] = 3;
+        assert_eq!(width_squares_misfit(&r, &[1, 2], &widths), Some(1));
+        widths[1] = 2;
+        assert_eq!(width_squares_misfit(&r, &[1, 2], &widths), None);
+        // a 6 x 3 box holds two 3 x 3 rooms, not three, and not two beside a 2 x 2 one
+        let g = parse(&["000000", "000000", "000000"]);
+        let r = Region::of_label(&g, 0);
+        let widths = [0u16, 3, 3, 3];
+        assert_eq!(width_squares_misfit(&r, &[1, 2], &widths), None);
+        assert_eq!(width_squares_misfit(&r, &[1, 2, 3], &widths), Some(3));
+        let widths = [0u16, 3, 3, 2];
+        assert_eq!(width_squares_misfit(&r, &[1, 2, 3], &widths), Some(3));
+        // no rule, no misfit
+        assert_eq!(width_squares_misfit(&r, &[1, 2, 3], &[0, 1, 0, 1]), None);
+    }
+
+    #[test]
+    fn rooms_that_pass_the_width_rules_never_misfit_their_region() {
+        // the pre-check only skips rounds that no candidate could pass: whenever the width
+        // passes leave every ruled room present and clean, it must agree that they fit
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(29);
+        let index = all_round();
+        let (mut checked, mut misfits) = (0, 0);
+        for _ in 0..1500 {
+            let mut g = random_rooms(&mut rng, 30, 20);
+            let r = region_all(&g);
+            let mut s = Scratch::new(g.cells.len());
+            let walls = Walls::none(g.w, g.h);
+            let widths: Vec<u16> = (0..10).map(|_| rng.random_range(0..5)).collect();
+            let labels: Vec<Label> = (1..6).collect();
+            misfits += width_squares_misfit(&r, &labels, &widths).is_some() as usize;
+            if !clean(&mut g, &r, &walls, &mut s) {
+                continue;
+            }
+            if clean_widths(&mut g, &r, &walls, &index, &widths, &mut s) != Some(true) {
+                continue;
+            }
+            let present: Vec<Label> = labels.iter().copied().filter(|&l| g.count(l) > 0).collect();
+            assert_eq!(width_squares_misfit(&r, &present, &widths), None);
+            checked += 1;
+        }
+        assert!(checked > 300 && misfits > 100, "{checked} clean grids, {misfits} misfits");
     }
 
     #[test]

@@ -632,6 +632,27 @@ pub fn cut(
     round: u64,
 ) -> crate::Result<CutOutcome> {
     let p = Prepared::new(grid, walls, spec, opts, n_labels, round);
+    let children = || -> Vec<&str> {
+        spec.growers
+            .iter()
+            .map(|g| spec.names[g.label as usize].as_str())
+            .collect()
+    };
+    // a region too small or too narrow for its rooms' width squares rejects every candidate:
+    // fail the round without drawing any (same outcome, none of the cost)
+    if p.width_rules {
+        if let Some(l) = cleanup::width_squares_misfit(&p.region, &p.labels, &p.widths) {
+            return Err(crate::CoreError::Infeasible(format!(
+                "cutting '{}' into {:?}: the region cannot hold a {} × {} cell square for room '{}' \
+                 beside the other rooms' (minimum widths)",
+                spec.names[spec.parent as usize],
+                children(),
+                p.widths[l as usize],
+                p.widths[l as usize],
+                spec.names[l as usize],
+            )));
+        }
+    }
     let mut rejected = BTreeMap::new();
     let mut candidates = 0;
     let finish = |best: Survivor,
@@ -693,11 +714,7 @@ pub fn cut(
             return Ok(finish(b, None, candidates, rejected));
         }
     }
-    let children: Vec<&str> = spec
-        .growers
-        .iter()
-        .map(|g| spec.names[g.label as usize].as_str())
-        .collect();
+    let children = children();
     let reasons: Vec<String> = {
         let mut v: Vec<(&String, &usize)> = rejected.iter().collect();
         v.sort_by(|a, b| b.1.cmp(a.1));

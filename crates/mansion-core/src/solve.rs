@@ -75,6 +75,15 @@ pub struct SolveOptions {
     pub growth: GrowthRule,
     /// See [`CutOptions::refine_walls`].
     pub refine_walls: bool,
+    /// Times a failed round may send the solver back to re-cut an earlier one, per floor
+    /// ([`MAX_BACKTRACKS`] by default). A budget in counts, not time, so results stay
+    /// deterministic: generated buildings give their strict first attempt a small one, since a
+    /// floor it cannot lay out is retried with the width rules lowered anyway.
+    pub max_backtracks: usize,
+    /// With `relax_widths`: backtracks spent keeping every width rule before a failing round's
+    /// rules are lowered (None: lowered at once). The search then goes on from where it stands
+    /// instead of starting the floor again.
+    pub strict_backtracks: Option<usize>,
 }
 
 impl Default for SolveOptions {
@@ -98,6 +107,8 @@ impl Default for SolveOptions {
             exhaustive: false,
             growth: c.growth,
             refine_walls: true,
+            max_backtracks: MAX_BACKTRACKS,
+            strict_backtracks: None,
         }
     }
 }
@@ -566,10 +577,10 @@ pub fn spine_centre(region: &Region) -> usize {
     region.cells[best] as usize
 }
 
-/// Solve one floor.
-/// Re-cuts allowed per round when later rounds fail, and backtracks allowed per floor.
+/// Re-cuts allowed per round when later rounds fail.
 const MAX_RECUTS: u64 = 3;
-const MAX_BACKTRACKS: usize = 8;
+/// Backtracks allowed per floor by default ([`SolveOptions::max_backtracks`]).
+pub const MAX_BACKTRACKS: usize = 8;
 
 /// Index of the round whose children include `label`.
 /// Width (m) a round's rules fall to when it cannot be cut otherwise: an agent of radius 0.3 m
@@ -580,6 +591,7 @@ fn creator(rounds: &[(Label, Vec<Label>)], label: Label) -> Option<usize> {
     rounds.iter().position(|(_, cs)| cs.contains(&label))
 }
 
+/// Solve one floor.
 pub fn solve_floor(
     graph: &GraphSpec,
     fp: &FootprintSpec,
@@ -647,6 +659,8 @@ pub fn solve_floor(
     let mut snapshots: Vec<(Grid, Vec<bool>, usize, bool)> = Vec::with_capacity(rounds.len());
     let mut attempts = vec![0u64; rounds.len()];
     let mut backtracks = 0usize;
+    // lowering a failing round's width rules (once the strict budget is spent)
+    let mut relaxing = opts.strict_backtracks.is_none();
     let mut t = 0;
     while t < rounds.len() {
         let (parent, children) = (&rounds[t].0, &rounds[t].1);
@@ -850,8 +864,23 @@ pub fn solve_floor(
         let round_labels = || std::iter::once(*parent).chain(children.iter().copied());
         let rule = |l: Label| cut_opts.widths.get(l as usize).copied().unwrap_or(0);
         let passage = ((RELAXED_WIDTH / opts.cell_size) - 1e-9).ceil().max(2.0) as usize;
+        // With a strict budget, rules are lowered only once the strict search has spent it (or has
+        // no earlier round left to re-cut); from then on as without one.
+        let strict = !relaxing && {
+            let mut back = creator(&rounds, *parent);
+            while let Some(r) = back {
+                if attempts[r] < MAX_RECUTS {
+                    break;
+                }
+                back = creator(&rounds, rounds[r].0);
+            }
+            back.is_some() && backtracks < opts.strict_backtracks.unwrap_or(0)
+        };
+        if opts.relax_widths && !strict && result.is_err() {
+            relaxing = true;
+        }
         let mut steps: Vec<usize> = Vec::new();
-        let relax = opts.relax_widths;
+        let relax = opts.relax_widths && relaxing;
         let floor_rule = opts.min_width.unwrap_or(0);
         if relax && floor_rule > passage && round_labels().any(|l| rule(l) > floor_rule) {
             steps.push(floor_rule);
@@ -886,7 +915,7 @@ pub fn solve_floor(
                     back = creator(&rounds, rounds[r].0);
                 }
                 match back {
-                    Some(r) if backtracks < MAX_BACKTRACKS => {
+                    Some(r) if backtracks < opts.max_backtracks => {
                         backtracks += 1;
                         attempts[r] += 1;
                         let (g, ex, d, fb) = snapshots[r].clone();

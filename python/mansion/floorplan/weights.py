@@ -93,6 +93,11 @@ class SolverSettings(BaseModel):
       with the rules above ``min_width`` lowered to it, then with every rule lowered to 1.0 m,
       before the solver backtracks (recorded as the round's ``widths_relaxed``); False: the
       round fails as any other;
+    - ``max_backtracks``: times per floor a round no candidate passes may send the solver back to
+      re-cut the round that made its region (a count, so results stay deterministic);
+    - ``strict_backtracks`` (with ``relax_widths``): backtracks spent keeping every width rule
+      before a failing round's rules are lowered, the search then going on from where it stands
+      (None: lowered at once); see the README's "Room widths" for what these budgets cost;
     - ``refine_walls``: after each cut round, move the walls between the round's rooms one cell at a
       time, from a room better off (relative to its target) towards one worse off, when one of
       the two is off its target on that side, while the energy falls (every move passes the same
@@ -133,6 +138,8 @@ class SolverSettings(BaseModel):
     fallback_samples: int = Field(default=400, ge=0)
     min_width: int | None = Field(default=None, ge=1)
     relax_widths: bool = True
+    max_backtracks: int = Field(default=8, ge=0)
+    strict_backtracks: int | None = Field(default=None, ge=0)
     refine_walls: bool = True
     growth: Literal["balanced", "longest"] = "balanced"
 
