@@ -42,7 +42,7 @@ from mansion.planning.program import (
 from mansion.planning.spine import spine_area
 from mansion.planning.typologies import Zone
 from mansion.building.generate import RELAXED_CLEAR_WIDTH
-from mansion.planning.topology import MAX_NODE_WIDTH
+from mansion.planning.topology import MAX_NODE_WIDTH, WIDE_ROOM_WIDTH
 from mansion.planning.typologies import TYPOLOGIES
 from mansion.planning.vocabulary import ROOMS
 
@@ -189,12 +189,18 @@ def test_planned_rooms_respect_the_table(seed: int) -> None:
                 assert node.min_width is None or node.min_width <= limit
                 continue
             assert node.min_width is not None and 0 < node.min_width <= math.sqrt(node.area)
-            assert node.min_width <= min(MAX_NODE_WIDTH, room_design(node.room_type).min_width) or (
+            table = room_design(node.room_type).min_width
+            assert node.min_width <= min(MAX_NODE_WIDTH, table) or (
                 design_key(node.room_type) in CORRIDOR_TYPES
             )
+            if table > MAX_NODE_WIDTH:
+                assert node.min_width <= WIDE_ROOM_WIDTH
+            elif design_key(node.room_type) not in CORRIDOR_TYPES:
+                # small rooms ask for their table width, unless their area cannot hold it
+                assert node.min_width == pytest.approx(min(table, math.sqrt(node.area / 1.5)), abs=0.01)
             if design_key(node.room_type) in ("corridor", "ward_corridor"):
                 assert node.min_width == pytest.approx(
-                    min(corridor_width(kind), MAX_NODE_WIDTH, math.sqrt(node.area / 1.5)), abs=0.01
+                    min(corridor_width(kind), WIDE_ROOM_WIDTH, math.sqrt(node.area / 1.5)), abs=0.01
                 )
         hub = program.rooms[0].id
         for room in program.rooms:
@@ -244,7 +250,7 @@ def test_programs_plan_the_hub_at_least_its_spine(kind: str) -> None:
         for index in range(program.floor_count):
             floor = program.floor_program(index)
             on_floor = [c for c in program.cores if index in c.floors]
-            spine = hub_spine((floor.outline, floor.holes), on_floor)
+            spine = hub_spine((floor.outline, floor.holes), on_floor, floor.rooms[0].room_type, kind)
             assert floor.rooms[0].area >= spine - 0.01, (kind, seed, index, floor.rooms[0].area, spine)
             assert sum(r.area for r in floor.rooms) <= floor.gross_floor_area - sum(
                 (c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in on_floor

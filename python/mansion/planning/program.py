@@ -33,7 +33,7 @@ from mansion.planning.palette import room_materials
 from mansion.planning.requested import FloorRequest, place_requests, record_requests
 from mansion.planning.room_names import slug
 from mansion.planning.spine import spine_area
-from mansion.planning.topology import MAX_NODE_WIDTH
+from mansion.planning.topology import min_width
 from mansion.planning.typologies import TYPOLOGIES, FloorTemplate, Rm, Typology, Zone
 from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
 from mansion.planning.vocabulary import ROOMS, room_kind
@@ -749,10 +749,16 @@ def min_arm(typ: Typology, building_type: str) -> float:
     return 4.0 if typ.family == "residential" and building_type not in BAY_TYPOLOGIES else 8.0
 
 
-def hub_spine(outline: Outline, cores: list[BuildingCore]) -> float:
-    """The area (m²) the layout keeps for the hub's path to ``cores`` (those on the floor) at the
-    widest node rule, which generated floors' corridors reach (:func:`spine_area`)."""
-    return spine_area(outline, cores, MAX_NODE_WIDTH)
+#: The generator's floor-wide clear width (``mansion.building.steps.MIN_CLEAR_WIDTH``): no
+#: hub's spine is narrower.
+FLOOR_WIDTH = 1.5
+
+
+def hub_spine(outline: Outline, cores: list[BuildingCore], hub: str, building_type: str) -> float:
+    """The area (m²) the layout keeps for the path of a hub of type ``hub`` to ``cores`` (those
+    on the floor): :func:`spine_area` at the hub's width rule."""
+    width = max(FLOOR_WIDTH, min_width(hub, math.inf, building_type))
+    return spine_area(outline, cores, width)
 
 
 def _free_area(outline: Outline, cores: list[BuildingCore], index: int) -> float:
@@ -777,7 +783,7 @@ def _move_requests(
                 _generic_rooms(
                     template, _apply_placements(rules, mine, index),
                     _free_area(outlines[index], cores, index), reserve, "", building_type,
-                    len(on_floor), hub_spine(outlines[index], on_floor),
+                    len(on_floor), hub_spine(outlines[index], on_floor, template.hub, building_type),
                 )
                 return True
             except PlannerError:
@@ -871,7 +877,9 @@ def plan_program(
         free = Polygon(*outline).area - sum((c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in on_floor)
         where = f"floor {index} of the {building_type.replace('_', ' ')}"
         here = [w for w in wants if w.floor == index]
-        spine = hub_spine(outline, on_floor) if bay_plan is None else 0.0
+        spine = 0.0 if bay_plan is not None else hub_spine(
+            outline, on_floor, _template(typ, role).hub, building_type
+        )
         if bay_plan is not None:
             extras = [Rm(w.room_type, w.count) for w in here]
             used = n_bays * bay_area + bay_plan.services_area
