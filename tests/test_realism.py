@@ -267,6 +267,10 @@ def test_small_corridor_zones_open_onto_a_corridor_hub() -> None:
     assert sorted(out) == sorted([(t, a, None if z == "classrooms" else z) for t, a, z in rooms])
     # a hub that is not a corridor, or one that would have too many children, keeps the zone
     assert _join_corridors("living_room", 40.0, rooms, zones)[2] == zones
+    # and so does a suite: its ensuite and closet open onto its hallway, not onto the landing
+    suite = [("master_bedroom", 20.0, "suite"), ("ensuite", 5.0, "suite"), ("walk_in_closet", 4.0, "suite")]
+    suites = {"suite": Zone("suite", "hallway", 4.0)}
+    assert _join_corridors("landing", 12.0, suite, suites) == (12.0, suite, suites)
     many = rooms + [("office", 12.0, None)] * (MAX_HUB_CHILDREN - 3)
     assert "classrooms" in _join_corridors("corridor", 40.0, many, zones)[2]
 

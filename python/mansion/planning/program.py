@@ -485,8 +485,9 @@ def _join_corridors(
     rooms: list[tuple[str, float, str | None]],
     zones: dict[str, Zone],
 ) -> tuple[float, list[tuple[str, float, str | None]], dict[str, Zone]]:
-    """A zone whose sub-hub is a corridor opens onto a corridor hub directly when the hub can
-    take its rooms (at most :data:`MAX_HUB_CHILDREN`): one double-loaded corridor, its area the
+    """A zone whose sub-hub is a corridor, and whose rooms all want a door to a corridor (the
+    design table's), opens onto a corridor hub directly when the hub can take its rooms (at most
+    :data:`MAX_HUB_CHILDREN`): one double-loaded corridor, its area the
     two corridors', instead of a branch the floor's first round must cut as one block. (A block
     that large is laid short: the hub's spine to the cores splits the floor, and the block's
     rooms take the loss; issue 14.)"""
@@ -499,7 +500,11 @@ def _join_corridors(
     for zid in sorted(children, key=lambda z: sum(zz == z for _, _, zz in rooms)):
         zone = zones[zid]
         mine = sum(zz == zid for _, _, zz in out)
-        if not _is_corridor(zone.hub) or direct + len(children) - 1 + mine > MAX_HUB_CHILDREN:
+        if (
+            not _is_corridor(zone.hub) or direct + len(children) - 1 + mine > MAX_HUB_CHILDREN
+            # a suite's hallway (a master bedroom's ensuite and closet) stays the suite's
+            or not all(room_design(t).corridor for t, _, zz in out if zz == zid)
+        ):
             continue
         hub_area += zone.hub_area if zone.hub_area is not None else room_kind(zone.hub).area
         out = [(t, a, None if zz == zid else zz) for t, a, zz in out]
