@@ -30,12 +30,13 @@ _MIN_ASPECT = 1.5
 #: Wider rooms (bedrooms 2.15 m, wards 3.2 m, classrooms 5.4 m) and corridors ask for at most
 #: :data:`WIDE_ROOM_WIDTH` and keep their shape through their area and the solver's compactness
 #: and aspect terms. Measured on the offline hundred (seeds 0–99, with the program's hub spine,
-#: issue 14), slivers / rooms below their table width / sum of generation times: every node
-#: capped at 1.5 m, 2.3 % / 35.6 % / 272 s; every node at up to 2.0 m, 4.6 % / 32.5 % / 368 s;
-#: corridors too at up to 2.0 m, 3.5 % / 32.5 % / 314 s (hospital wards and ensuites lose most).
-#: Seeds 0–27: up to 2.5 m took 2.7 times as long as 1.5 m. (Before the hub spine: corridors at
-#: their building type's full width, up to 2.4 m, relaxed 14 of 100 floors; the table's full
-#: widths made half the floors fail and drop every rule.)
+#: issue 14), slivers / rooms below their table width: every node capped at 1.5 m, 2.3 % /
+#: 35.6 %; this rule, 2.3 % / 31.8 %; every node at up to 2.0 m, 4.6 % / 32.5 %; corridors at up
+#: to 2.0 m and wider rooms at 1.5 m, 3.5 % / 32.5 % (hospital wards and ensuites lose most). On
+#: seeds 0–27, every node at up to 2.0 m took 1.6 times as long as at 1.5 m, up to 2.5 m 2.7
+#: times. (Before the hub spine: corridors at their building type's full width, up to 2.4 m,
+#: relaxed 14 of 100 floors; the table's full widths made half the floors fail and drop every
+#: rule.)
 MAX_NODE_WIDTH = 2.0
 #: The width rule of corridors, and of rooms whose table width is above :data:`MAX_NODE_WIDTH`.
 WIDE_ROOM_WIDTH = 1.5
