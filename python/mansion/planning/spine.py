@@ -30,7 +30,7 @@ __all__ = ["SPINE_CELL", "spine_area"]
 SPINE_CELL = 0.5
 
 
-def _grid(outline: Outline, cores: Sequence[BuildingCore], cell: float) -> tuple[np.ndarray, np.ndarray, tuple[float, float]]:
+def _grid(outline: Outline, cores: Sequence[BuildingCore], cell: float) -> tuple[np.ndarray, np.ndarray]:
     """(inside, core label or -1) on a grid over ``outline``'s box with a one-cell border; cells
     belong where their centres fall."""
     shape = Polygon(*outline)
@@ -45,7 +45,7 @@ def _grid(outline: Outline, cores: Sequence[BuildingCore], cell: float) -> tuple
     for k, core in enumerate(cores):
         box = (gx > core.x[0]) & (gx < core.x[1]) & (gy > core.y[0]) & (gy < core.y[1])
         label[box & floor] = k
-    return floor & (label < 0), label, (x0, y0)
+    return floor & (label < 0), label
 
 
 def _bfs(inside: np.ndarray, sources: list[int]) -> tuple[list[int], dict[int, int]]:
@@ -73,7 +73,7 @@ def spine_area(
     on the floor) through ``outline``, at a width rule of ``width`` m; 0 without cores."""
     if not cores:
         return 0.0
-    inside, label, _ = _grid(outline, cores, cell)
+    inside, label = _grid(outline, cores, cell)
     h, w = inside.shape
     flat = inside.ravel()
     cells = np.flatnonzero(flat)
