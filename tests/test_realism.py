@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import random
 import sys
 from pathlib import Path
 
@@ -33,9 +34,16 @@ from mansion.models.room_design import (
     design_key,
     room_design,
 )
-from mansion.planning.program import AREA_MARGIN, fit_minimums, min_target
+from mansion.exceptions import PlannerError
+from mansion.models.building import BuildingCore
+from mansion.planning.planner import Constraints, OfflinePlanner
+from mansion.planning.program import (
+    AREA_MARGIN, MAX_HUB_CHILDREN, _join_corridors, fit_minimums, hub_spine, min_target,
+)
+from mansion.planning.spine import spine_area
+from mansion.planning.typologies import Zone
 from mansion.building.generate import RELAXED_CLEAR_WIDTH
-from mansion.planning.topology import MAX_NODE_WIDTH
+from mansion.planning.topology import MAX_NODE_WIDTH, WIDE_ROOM_WIDTH
 from mansion.planning.typologies import TYPOLOGIES
 from mansion.planning.vocabulary import ROOMS
 
@@ -182,12 +190,18 @@ def test_planned_rooms_respect_the_table(seed: int) -> None:
                 assert node.min_width is None or node.min_width <= limit
                 continue
             assert node.min_width is not None and 0 < node.min_width <= math.sqrt(node.area)
-            assert node.min_width <= min(MAX_NODE_WIDTH, room_design(node.room_type).min_width) or (
+            table = room_design(node.room_type).min_width
+            assert node.min_width <= min(MAX_NODE_WIDTH, table) or (
                 design_key(node.room_type) in CORRIDOR_TYPES
             )
+            if table > MAX_NODE_WIDTH:
+                assert node.min_width <= WIDE_ROOM_WIDTH
+            elif design_key(node.room_type) not in CORRIDOR_TYPES:
+                # small rooms ask for their table width, unless their area cannot hold it
+                assert node.min_width == pytest.approx(min(table, math.sqrt(node.area / 1.5)), abs=0.01)
             if design_key(node.room_type) in ("corridor", "ward_corridor"):
                 assert node.min_width == pytest.approx(
-                    min(corridor_width(kind), MAX_NODE_WIDTH, math.sqrt(node.area / 1.5)), abs=0.01
+                    min(corridor_width(kind), WIDE_ROOM_WIDTH, math.sqrt(node.area / 1.5)), abs=0.01
                 )
         hub = program.rooms[0].id
         for room in program.rooms:
@@ -202,6 +216,70 @@ def test_planned_rooms_respect_the_table(seed: int) -> None:
                 baths = [r for r in program.rooms if r.parent == room.id]
                 assert len(baths) == 1 and baths[0].room_type == "ensuite"
                 assert floor.graph.neighbours(baths[0].id) == [room.id]
+
+
+def _core(cid: str, x: tuple[float, float], y: tuple[float, float]) -> BuildingCore:
+    return BuildingCore(id=cid, type="stair", x=x, y=y, floors=[0])
+
+
+def test_the_hub_spine_grows_with_the_span_of_the_cores() -> None:
+    floor = ([(0.0, 0.0), (24.0, 0.0), (24.0, 12.0), (0.0, 12.0)], [])
+    one = [_core("a", (0.0, 3.0), (0.0, 6.0))]
+    near = [*one, _core("b", (3.0, 6.0), (0.0, 3.0))]
+    apart = [*one, _core("b", (21.0, 24.0), (6.0, 12.0))]
+    assert spine_area(floor, [], 1.5) == 0.0
+    # the path from the floor's deepest cell (the first of its middle row, 6 m in) to a core in
+    # the corner, 1.5 m wide
+    assert 3 * 1.5 < spine_area(floor, one, 1.5) < 12 * 1.5
+    assert spine_area(floor, near, 1.5) < spine_area(floor, apart, 1.5)
+    assert spine_area(floor, apart, 1.0) < spine_area(floor, apart, 1.5) < spine_area(floor, apart, 2.5)
+    free = 24 * 12 - 18 - 18
+    assert spine_area(floor, apart, 2.5) < free
+    # a courtyard in the middle: the spine goes round it, and never over it
+    ring = (floor[0], [[(9.0, 4.0), (15.0, 4.0), (15.0, 8.0), (9.0, 8.0)]])
+    assert 0 < spine_area(ring, apart, 1.5) <= free - 24
+
+
+@pytest.mark.parametrize("kind", ["school", "hotel", "hospital", "library", "villa"])
+def test_programs_plan_the_hub_at_least_its_spine(kind: str) -> None:
+    planner = OfflinePlanner()
+    for seed in range(3):
+        for relax in range(3):  # generate_building's ladder: relaxed programs when one does not fit
+            try:
+                program, _ = planner.plan_program(
+                    f"a {kind}",
+                    Constraints(floors=4 if kind != "villa" else 2, building_type=kind, relax=relax),
+                    random.Random(seed),
+                )
+                break
+            except PlannerError:
+                assert relax < 2
+        for index in range(program.floor_count):
+            floor = program.floor_program(index)
+            on_floor = [c for c in program.cores if index in c.floors]
+            spine = hub_spine((floor.outline, floor.holes), on_floor, floor.rooms[0].room_type, kind)
+            assert floor.rooms[0].area >= spine - 0.01, (kind, seed, index, floor.rooms[0].area, spine)
+            assert sum(r.area for r in floor.rooms) <= floor.gross_floor_area - sum(
+                (c.x[1] - c.x[0]) * (c.y[1] - c.y[0]) for c in on_floor
+            ) * 1.0 + 2.0
+
+
+def test_small_corridor_zones_open_onto_a_corridor_hub() -> None:
+    rooms = [("science_lab", 60.0, None), ("storage", 4.0, None)]
+    rooms += [("classroom", 48.0, "classrooms")] * 3 + [("toilet", 3.4, "toilets")] * 2
+    zones = {"classrooms": Zone("classrooms", "corridor", 18.0), "toilets": Zone("toilets", "toilet_lobby", 4.0)}
+    hub_area, out, left = _join_corridors("corridor", 40.0, rooms, zones)
+    # the classrooms' corridor joins the hub's (its area too); the toilets keep their lobby
+    assert set(left) == {"toilets"} and hub_area == pytest.approx(58.0)
+    assert sorted(out) == sorted([(t, a, None if z == "classrooms" else z) for t, a, z in rooms])
+    # a hub that is not a corridor, or one that would have too many children, keeps the zone
+    assert _join_corridors("living_room", 40.0, rooms, zones)[2] == zones
+    # and so does a suite: its ensuite and closet open onto its hallway, not onto the landing
+    suite = [("master_bedroom", 20.0, "suite"), ("ensuite", 5.0, "suite"), ("walk_in_closet", 4.0, "suite")]
+    suites = {"suite": Zone("suite", "hallway", 4.0)}
+    assert _join_corridors("landing", 12.0, suite, suites) == (12.0, suite, suites)
+    many = rooms + [("office", 12.0, None)] * (MAX_HUB_CHILDREN - 3)
+    assert "classrooms" in _join_corridors("corridor", 40.0, many, zones)[2]
 
 
 def test_a_floor_too_small_drops_optional_rooms_and_records_it() -> None:

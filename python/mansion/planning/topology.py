@@ -20,30 +20,40 @@ from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
 from mansion.planning.vocabulary import room_kind
 
-__all__ = ["MAX_NODE_WIDTH", "floor_graph", "min_width", "with_min_widths"]
+__all__ = ["MAX_NODE_WIDTH", "WIDE_ROOM_WIDTH", "floor_graph", "min_width", "with_min_widths"]
 
 #: A room's minimum width never asks for a squarer room than this (width² · aspect ≤ area), so a
 #: room squeezed to its minimum area can still be laid out.
 _MIN_ASPECT = 1.5
-#: The widest clear width a node asks of the solver; wider rooms (bedrooms 2.15 m, classrooms
-#: 5.4 m) keep their shape through their area and the solver's compactness and aspect terms.
-#: Measured with the solver's width rules (issue 14) on benchmark seeds 0–27 with a floor-wide
-#: 1.5 m: nodes capped at 1.5 m take 8.7 s and relax 6 of 100 floors; at 2.0 m, 29 s and 25
-#: floors (slivers 2.1 % / 2.7 %, rooms below their table width 35 % / 31 %); corridors at their
-#: building type's full width (up to 2.4 m), 12.4 s and 14 floors relaxed (slivers 5.5 %); the
-#: table's full widths made half the floors fail and drop every rule.
-MAX_NODE_WIDTH = 1.5
+#: The widest clear width a node asks of the solver: the rooms the table gives at most this ask
+#: for their table width (accessible toilets 1.6 m, kitchens 1.8 m: 2.0 m on the 0.5 m grid).
+#: Wider rooms (bedrooms 2.15 m, wards 3.2 m, classrooms 5.4 m) and corridors ask for at most
+#: :data:`WIDE_ROOM_WIDTH` and keep their shape through their area and the solver's compactness
+#: and aspect terms. Measured on the offline hundred (seeds 0–99, with the program's hub spine,
+#: issue 14), slivers / rooms below their table width: every node capped at 1.5 m, 2.3 % /
+#: 35.6 %; this rule, 2.3 % / 31.8 %; every node at up to 2.0 m, 4.6 % / 32.5 %; corridors at up
+#: to 2.0 m and wider rooms at 1.5 m, 3.5 % / 32.5 % (hospital wards and ensuites lose most). On
+#: seeds 0–27, every node at up to 2.0 m took 1.6 times as long as at 1.5 m, up to 2.5 m 2.7
+#: times. (Before the hub spine: corridors at their building type's full width, up to 2.4 m,
+#: relaxed 14 of 100 floors; the table's full widths made half the floors fail and drop every
+#: rule.)
+MAX_NODE_WIDTH = 2.0
+#: The width rule of corridors, and of rooms whose table width is above :data:`MAX_NODE_WIDTH`.
+WIDE_ROOM_WIDTH = 1.5
 
 
 def min_width(room_type: str, area: float, building_type: str | None) -> float:
     """The minimum clear width (m) of a room of ``room_type`` and ``area`` m² in a building of
     ``building_type``: the table's, a corridor's the building type's, never more than a room of
-    this area can have nor more than :data:`MAX_NODE_WIDTH`."""
+    this area can have nor more than :data:`MAX_NODE_WIDTH` (:data:`WIDE_ROOM_WIDTH` for a
+    corridor or a room whose table width is above that)."""
     width = room_design(room_type).min_width
-    if design_key(room_type) in CORRIDOR_TYPES:
+    corridor = design_key(room_type) in CORRIDOR_TYPES
+    if corridor:
         # corridors are planned as length × width (their area) at their building type's width
         width = max(width, corridor_width(building_type))
-    return round(min(width, MAX_NODE_WIDTH, math.sqrt(area / _MIN_ASPECT)), 2)
+    cap = WIDE_ROOM_WIDTH if corridor or width > MAX_NODE_WIDTH else MAX_NODE_WIDTH
+    return round(min(width, cap, math.sqrt(area / _MIN_ASPECT)), 2)
 
 
 def with_min_widths(graph: RoomGraph, building_type: str | None) -> RoomGraph:
