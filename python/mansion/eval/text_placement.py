@@ -91,10 +91,10 @@ def solve_from_text(
     fallback: Callable[[], tuple[Any, Any]] | None = None,
 ) -> tuple[dict[str, tuple[float, float]] | None, Any, Any]:
     """Try the seed sets of :data:`VARIANTS` with ``solve(seeds) -> (prediction, layout)`` and keep
-    the layout that agrees best with the text and with the other layouts. When no seed set can be laid out, ``fallback()``
-    (the solver's own seed heuristic, which reads neither the text nor the ground truth) is tried,
-    and its seeds are reported as None; without one, or when it fails too, the last
-    :class:`MansionError` is raised."""
+    the layout that agrees best with the text and with the other layouts. When no seed set can be
+    laid out, ``fallback()`` (the solver's own seed heuristic, which reads neither the text nor the
+    ground truth) is tried, and its seeds are reported as None; without one, or when it fails too,
+    the last :class:`MansionError` is raised."""
     p = text_problem(plan, description)
     base = SeedWeights()
     solved: list[tuple[float, dict[str, tuple[float, float]], Any, Any]] = []
