@@ -125,6 +125,32 @@ def test_width_rules_are_relaxed_last_and_recorded(monkeypatch: pytest.MonkeyPat
     assert any("minimum clear width" in r for r in f.relaxations)
 
 
+def test_the_agents_width_is_kept_for_several_seeds_before_rules_are_dropped(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A floor that only the 1.0 m rule can lay out gets RELAXED_ATTEMPTS seeds at that rule
+    before every rule is dropped (a rule-less floor may keep a 0.5 m neck no agent passes)."""
+    real = steps.solve_floor
+    seen: list[tuple[int | None, int]] = []
+
+    def only_the_third_relaxed_seed(graph: RoomGraph, footprint: Footprint, **kwargs: object) -> mansion.FloorLayout:
+        cells = kwargs["settings"].min_width
+        relaxed = [c for c, _ in seen if c == 2]
+        seen.append((cells, int(kwargs["rng_seed"])))
+        if cells != 2 or len(relaxed) < steps.RELAXED_ATTEMPTS - 1:
+            raise InfeasibleLayoutError("every candidate was rejected")
+        return real(graph, footprint, **kwargs)
+
+    monkeypatch.setattr(steps, "solve_floor", only_the_third_relaxed_seed)
+    b = gen.generate_building("a studio", building_type="studio", floors=1, seed=0)
+    f = b.floors[0]
+    at_one_metre = [s for c, s in seen if c == 2]
+    assert len(at_one_metre) == steps.RELAXED_ATTEMPTS and len(set(at_one_metre)) == steps.RELAXED_ATTEMPTS
+    assert f.attempts == 4 + steps.RELAXED_ATTEMPTS < gen.ATTEMPTS
+    assert "minimum clear widths dropped" not in f.relaxations
+    assert "minimum clear widths lowered to 1 m" in f.relaxations
+
+
 def passable_parts(poly: Polygon, width: float) -> int:
     """Pieces of what a ``width``-wide agent's centre can reach in ``poly`` (erosion by a hair
     under half the width): 1 when every part of the room connects through passages that wide."""
