@@ -110,7 +110,10 @@ fn bench(c: &mut Criterion) {
         strict_backtracks: Some(2),
         ..opts
     };
-    for (name, o) in [("strict_min_width", &strict), ("strict_budget_min_width", &budget)] {
+    for (name, o) in [
+        ("strict_min_width", &strict),
+        ("strict_budget_min_width", &budget),
+    ] {
         g.bench_function(name, |b| {
             b.iter(|| {
                 pool.install(|| solve_floor(black_box(&graph), &fp, o, &mut HeuristicPlanner).ok())

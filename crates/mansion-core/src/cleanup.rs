@@ -1051,7 +1051,10 @@ mod tests {
             assert_eq!(width_squares_misfit(&r, &present, &widths), None);
             checked += 1;
         }
-        assert!(checked > 300 && misfits > 100, "{checked} clean grids, {misfits} misfits");
+        assert!(
+            checked > 300 && misfits > 100,
+            "{checked} clean grids, {misfits} misfits"
+        );
     }
 
     #[test]
