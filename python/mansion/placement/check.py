@@ -128,7 +128,7 @@ def _blocked(gx: NDArray[np.float64], gy: NDArray[np.float64], shapes: Sequence[
     counts). Measured with numpy in each shape's window of the grid (one formula for a
     rectangle, one per edge for other shapes) rather than by a prepared shapely ``dwithin`` per
     point over the shapes' union: the validator's rooms of a seven-storey hospital build their
-    grids about five times faster (12 → 2.5 ms a room), cell for cell the same."""
+    grids about four times faster (12 → 3 ms a room), cell for cell the same."""
     near = np.zeros(gx.shape, dtype=bool)
     xs, ys = gx[0], gy[:, 0]
     r = radius - 1e-12
