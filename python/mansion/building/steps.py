@@ -8,9 +8,8 @@ A floor whose solve fails is retried with other solver seeds, then with its ``ad
 dropped, then (only for carried walls) without the carried walls, then with every width rule
 lowered to :data:`RELAXED_CLEAR_WIDTH` (:data:`RELAXED_ATTEMPTS` seeds), then without any width
 rule; each relaxation is recorded on the floor. The first attempt keeps every width rule; from the
-second on, a cut round that no
-candidate passes under width rules wider than 1.0 m is cut again, by the solver, with that
-round's rules lowered (recorded on the floor). When every attempt fails,
+second on, a cut round that no candidate passes under width rules wider than 1.0 m is cut again,
+by the solver, with that round's rules lowered (recorded on the floor). When every attempt fails,
 :class:`InfeasibleLayoutError` names the floor.
 """
 
