@@ -567,22 +567,19 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if free(m.start(), m.end()):
             for d in _dirs(m, text):
                 add("exterior", m, direction=d)
-    # "a small D:south exterior wall", "the D:north and D:east exterior walls"
-    for m in re.finditer(r"(?:" + _DD + r")\s+(?:exterior|outside|external)\s+walls?\b", text):
-        if free(m.start(), m.end()):
-            for d in _dirs(m, text):
-                if d != "centre":
-                    add("exterior", m, direction=d)
-    for m in re.finditer(r"(?:to\s+the\s+)?(?:" + _DD + r")\s+(?:is|are)\s+(?:the\s+)?(?:house\s+|unit\s+|building\s+)?(?:exterior|outside)", text):
-        if free(m.start(), m.end()):
-            for d in _dirs(m, text):
-                if d != "centre":
-                    add("exterior", m, direction=d)
-    for m in re.finditer(r"(?:exterior|outside|external)(?:\s+walls?)?(?:\s+(?:is|are|on|to|at|of|both|the))*\s+(?:" + _DD + r")", text):
-        if free(m.start(), m.end()):
-            for d in _dirs(m, text):
-                if d != "centre":
-                    add("exterior", m, direction=d)
+    # "a small D:south exterior wall", "the D:north and D:east exterior walls", "to the D:west is
+    # the house exterior", "exterior walls on the D:east" (each pattern in turn, as the spans it
+    # takes are not free for the next)
+    for pattern in (
+        r"(?:" + _DD + r")\s+(?:exterior|outside|external)\s+walls?\b",
+        r"(?:to\s+the\s+)?(?:" + _DD + r")\s+(?:is|are)\s+(?:the\s+)?(?:house\s+|unit\s+|building\s+)?(?:exterior|outside)",
+        r"(?:exterior|outside|external)(?:\s+walls?)?(?:\s+(?:is|are|on|to|at|of|both|the))*\s+(?:" + _DD + r")",
+    ):
+        for m in re.finditer(pattern, text):
+            if free(m.start(), m.end()):
+                for d in _dirs(m, text):
+                    if d != "centre":
+                        add("exterior", m, direction=d)
 
     # 5. Other adjacency words: next to, near, adjacent, beside, across from, opposite, facing.
     adjacency = (
