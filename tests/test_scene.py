@@ -728,3 +728,27 @@ def test_a_strip_narrower_than_the_agent_is_not_walkable() -> None:
     assert navigation.unreachable_rooms(house) == ["c", "e"]
     assert navigation.unreachable_rooms(house, radius=0.2, margin=0.0) == []
     assert {p.element for p in validate_house(h) if p.rule == "navigable"} == {"c", "e"}
+
+
+def test_furniture_checks_share_the_grown_obstacles() -> None:
+    """The validator grows a floor's objects once (navigation.Obstacles) for the two furniture
+    checks; they answer as when each grows its own, and refuse obstacles grown for another agent."""
+    from mansion.scene import navigation
+
+    h = _loop()
+    # a dresser in b across the doorstep of its door from a
+    h["objects"].append({"id": "b|dresser", "assetId": "Dresser_209_1", "room": "b", "kinematic": True,
+                         "position": {"x": 3.3, "y": 0.35, "z": 1.5}, "rotation": {"x": 0, "y": 90, "z": 0}})
+    house = House.model_validate(h)
+    c = navigation.AGENT_RADIUS + navigation.MARGIN
+    shared = navigation.Obstacles.of(house, c)
+    assert len(shared.grown) == len(navigation.floor_objects(house)) == 2
+    assert all(g.contains(fp) for g, fp in zip(shared.grown, navigation.floor_objects(house), strict=True))
+    cut = navigation.disconnected_entrances(house)
+    blocked = navigation.blocked_entrances(house)
+    assert [c.room for c in cut] == ["b"] and cut[0].furniture
+    assert [room for room, _ in blocked] == ["b"]
+    assert navigation.disconnected_entrances(house, obstacles=shared) == cut
+    assert navigation.blocked_entrances(house, obstacles=shared) == blocked
+    with pytest.raises(ValueError, match="clearance"):
+        navigation.blocked_entrances(house, obstacles=navigation.Obstacles.of(house, 0.2))

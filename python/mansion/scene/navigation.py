@@ -37,6 +37,7 @@ from mansion.scene.house import AgentPose, Door, House, Wall
 __all__ = [
     "AGENT_RADIUS",
     "MARGIN",
+    "Obstacles",
     "RoomCut",
     "disconnected_entrances",
     "blocked_entrances",
@@ -268,6 +269,37 @@ def _floor_objects(house: House) -> list[tuple[str | None, Polygon]]:
     return out
 
 
+@dataclass(frozen=True)
+class Obstacles:
+    """A floor's objects in the agent's way (:func:`floor_objects`), each with the room it names
+    and its footprint grown by the clearance: what :func:`disconnected_entrances` and
+    :func:`blocked_entrances` subtract from the free space, grown once per floor for both, as
+    :meth:`Polygon.buffer` grows them (round corners of 16 segments a quarter: the validator's
+    answers are the same to the bit on the real houses)."""
+
+    rooms: list[str | None]
+    grown: list[Polygon]
+    clearance: float
+
+    @classmethod
+    def of(cls, house: House, clearance: float) -> Obstacles:
+        placed = _floor_objects(house)
+        grown = list(shapely.buffer([fp for _, fp in placed], clearance - _TOL, quad_segs=16)) if placed else []
+        return cls([rid for rid, _ in placed], grown, clearance)
+
+    def in_room(self, room: str) -> list[Polygon]:
+        """The grown footprints of the objects that name ``room`` or no room."""
+        return [g for rid, g in zip(self.rooms, self.grown, strict=True) if rid is None or rid == room]
+
+
+def _obstacles(house: House, clearance: float, given: Obstacles | None) -> Obstacles:
+    if given is None:
+        return Obstacles.of(house, clearance)
+    if abs(given.clearance - clearance) > 1e-12:
+        raise ValueError(f"obstacles grown by {given.clearance} m, not by the clearance {clearance} m")
+    return given
+
+
 def _groups(space: BaseGeometry, ways: list[RoomEntrance], reach: float) -> tuple[list[list[str]], list[str]]:
     """Entrances grouped by the pieces of ``space`` they open onto (an entrance touching two
     pieces joins them: the agent crosses through the doorway), and those touching none."""
@@ -309,12 +341,13 @@ def _passable(ways: list[RoomEntrance], clearance: float) -> list[RoomEntrance]:
 
 def disconnected_entrances(
     house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
-    objects: bool = True, space: BaseGeometry | None = None,
+    objects: bool = True, space: BaseGeometry | None = None, obstacles: Obstacles | None = None,
 ) -> list[RoomCut]:
     """Every room whose doors and openings the agent cannot walk between inside it: a strip the
     agent cannot pass is not part of the walkable room, and (with ``objects``) the room's floor
     objects stand in the way. A room with one entrance is cut only when that entrance is blocked
-    by its objects. ``space``: as for :func:`unreachable_rooms`."""
+    by its objects. ``space``: as for :func:`unreachable_rooms`; ``obstacles``: the floor's
+    :class:`Obstacles` at this clearance, when the caller has them already."""
     c = radius + margin
     reach = c + _DOORSTEP
     polys = _room_polygons(house)
@@ -322,7 +355,7 @@ def disconnected_entrances(
     # open, so an agent crossing a thin room from door to door facing it stays in it)
     floor = free_space(house, c) if space is None else space
     ways_by_room = room_entrances(house)
-    placed = _floor_objects(house) if objects else []
+    placed = _obstacles(house, c, obstacles) if objects else None
     out = []
     for rid, poly in polys.items():
         ways = _passable(ways_by_room.get(rid, []), c)
@@ -331,10 +364,10 @@ def disconnected_entrances(
         bare = floor.intersection(poly)
         groups, blocked = _groups(bare, ways, reach)
         furniture = False
-        if objects and not blocked and len(groups) <= 1:
-            items = [fp for room, fp in placed if room is None or room == rid]
+        if placed is not None and not blocked and len(groups) <= 1:
+            items = placed.in_room(rid)
             if items:
-                space = bare.difference(shapely.union_all([o.buffer(c - _TOL) for o in items]))
+                space = bare.difference(shapely.union_all(items))
                 groups, blocked = _groups(space, ways, reach)
                 furniture = True
         if len(ways) == 1 and not (furniture and blocked):
@@ -346,12 +379,13 @@ def disconnected_entrances(
 
 def blocked_entrances(
     house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
-    start: Pt | None = None, space: BaseGeometry | None = None,
+    start: Pt | None = None, space: BaseGeometry | None = None, obstacles: Obstacles | None = None,
 ) -> list[tuple[str, str]]:
     """(room, entrance id) of every door or opening whose doorstep in that room the agent reached
     from the spawn with the objects removed but no longer reaches with the floor objects in place
     (the furniture shuts it off). Empty when the house has no usable spawn. ``space``: as for
-    :func:`unreachable_rooms` (the free space without objects)."""
+    :func:`unreachable_rooms` (the free space without objects); ``obstacles`` as for
+    :func:`disconnected_entrances`."""
     if start is None:
         pose = spawn_pose(house)
         if pose is None:
@@ -369,7 +403,8 @@ def blocked_entrances(
 
     empty = free_space(house, c) if space is None else space
     bare = reached(empty)
-    full = reached(without(empty, floor_objects(house), c))
+    grown = _obstacles(house, c, obstacles).grown
+    full = reached(empty.difference(shapely.union_all(grown)) if grown else empty)
     if bare is None:
         return []
     polys = _room_polygons(house)

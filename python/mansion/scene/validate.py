@@ -508,6 +508,8 @@ class _HouseCheck:
 
     def children(self, parent: _Placed, db: dict[str, Any]) -> None:
         """Small objects lie on their receptacle: inside its footprint, resting on its top."""
+        if not parent.obj.children:
+            return
         top = parent.obj.position.y + parent.height / 2
         base = parent.obj.position.y - parent.height / 2
         area = parent.fp.buffer(OBJECT_TOLERANCE, join_style="mitre")
@@ -652,7 +654,9 @@ class _HouseCheck:
         # it in metadata.mansion.furnishing), a warning for the others (ProcTHOR's own houses
         # have such rooms).
         promised = self._furnishing_radius() is not None
-        for cut in navigation.disconnected_entrances(self.house, radius=radius, margin=margin, space=space):
+        obstacles = navigation.Obstacles.of(self.house, radius + margin)
+        for cut in navigation.disconnected_entrances(self.house, radius=radius, margin=margin, space=space,
+                                                     obstacles=obstacles):
             parts = " | ".join(", ".join(g) for g in cut.groups)
             shut = f"; {', '.join(cut.blocked)} reached by no free space" if cut.blocked else ""
             if not cut.furniture:
@@ -661,7 +665,8 @@ class _HouseCheck:
             else:
                 self.add("room-doors" if promised else "furniture-cut", cut.room,
                          f"its furniture cuts its doors apart: {parts}{shut}")
-        for rid, eid in navigation.blocked_entrances(self.house, radius=radius, margin=margin, space=space):
+        for rid, eid in navigation.blocked_entrances(self.house, radius=radius, margin=margin, space=space,
+                                                     obstacles=obstacles):
             self.add("furniture-blocked", rid,
                      f"the furniture shuts the agent off from the doorstep of {eid!r} in this room")
 
