@@ -192,9 +192,17 @@ def test_the_checks_free_cells_match_shapely_distances() -> None:
     from mansion.placement.check import FreeSpace, footprint, solid_walls
 
     rng = np.random.default_rng(11)
-    ring = [(0.0, 0.0), (4.0, 0.0), (4.0, 2.5), (2.5, 2.5), (2.5, 3.5), (0.0, 3.5)]
-    gaps = [((1.0, 0.0), (1.9, 0.0)), ((2.5, 2.6), (2.5, 3.4))]
-    for _ in range(12):
+    rooms = [
+        # an L (shapely's containment), a rectangle (compared with its bounds; a gap reaching a
+        # corner, one given end first) and a turned quadrilateral (a gap along a slanted edge)
+        ([(0.0, 0.0), (4.0, 0.0), (4.0, 2.5), (2.5, 2.5), (2.5, 3.5), (0.0, 3.5)],
+         [((1.0, 0.0), (1.9, 0.0)), ((2.5, 2.6), (2.5, 3.4))]),
+        ([(0.0, 0.0), (4.0, 0.0), (4.0, 3.5), (0.0, 3.5)],
+         [((3.1, 0.0), (4.0, 0.0)), ((0.0, 3.0), (0.0, 1.2))]),
+        ([(0.0, 0.0), (4.0, 0.5), (3.5, 4.0), (-0.5, 3.5)], [((1.6, 0.2), (2.4, 0.3))]),
+    ]
+    for k in range(15):
+        ring, gaps = rooms[k % len(rooms)]
         obstacles = [footprint((float(rng.uniform(0, 4)), float(rng.uniform(0, 3.5))), float(rng.uniform(0.1, 1.5)),
                                float(rng.uniform(0.1, 1.5)), float(rng.choice([0, 90, 33.3, -147.0])))
                      for _ in range(int(rng.integers(1, 6)))]

@@ -122,6 +122,59 @@ def _window(xs: NDArray[np.float64], ys: NDArray[np.float64], bounds: tuple[floa
     return (slice(int(i0), int(i1)), slice(int(j0), int(j1))) if i0 < i1 and j0 < j1 else None
 
 
+def _solid_segments(ring: Sequence[Pt], gaps: Sequence[tuple[Pt, Pt]]) -> NDArray[np.float64]:
+    """:func:`solid_walls` as rows (ax, ay, bx, by), by interval arithmetic along each edge of the
+    ring (a gap is a stretch of one edge) rather than shapely differences: 0.7 ms of a room's
+    grid otherwise, and the same pieces to 1e-9 m."""
+    rows = []
+    n = len(ring)
+    for k in range(n):
+        (ax, ay), (bx, by) = ring[k], ring[(k + 1) % n]
+        dx, dy = bx - ax, by - ay
+        length = math.hypot(dx, dy)
+        if length <= 0:
+            continue
+        ux, uy = dx / length, dy / length
+        pieces = [(0.0, length)]
+        for (px, py), (qx, qy) in gaps:
+            # on this edge's line (both ends within 1e-9 m of it): its stretch along the edge
+            if abs((px - ax) * uy - (py - ay) * ux) > 1e-9 or abs((qx - ax) * uy - (qy - ay) * ux) > 1e-9:
+                continue
+            s0, s1 = sorted(((px - ax) * ux + (py - ay) * uy, (qx - ax) * ux + (qy - ay) * uy))
+            pieces = [part for lo, hi in pieces
+                      for part in ((lo, min(hi, s0)), (max(lo, s1), hi)) if part[1] > part[0]]
+        rows += [(ax + ux * lo, ay + uy * lo, ax + ux * hi, ay + uy * hi) for lo, hi in pieces]
+    return np.asarray(rows, dtype=float).reshape(-1, 4)
+
+
+def _inside(poly: Polygon, gx: NDArray[np.float64], gy: NDArray[np.float64]) -> Mask:
+    """``shapely.contains_xy(poly, gx, gy)``; for an axis-aligned rectangle (most rooms) by
+    comparing with its bounds, strictly (a point on the outline is not contained), 20 times
+    faster."""
+    xy = shapely.get_coordinates(poly)
+    if len(xy) == 5 and not poly.interiors:
+        xs, ys = set(xy[:4, 0].tolist()), set(xy[:4, 1].tolist())
+        if len(xs) == 2 and len(ys) == 2 and all(
+                (a[0] == b[0]) != (a[1] == b[1]) for a, b in zip(xy[:4], xy[1:5], strict=True)):
+            x0, y0, x1, y1 = poly.bounds
+            return (gx > x0) & (gx < x1) & (gy > y0) & (gy < y1)
+    return np.asarray(shapely.contains_xy(poly, gx, gy))
+
+
+def _near_segments(gx: NDArray[np.float64], gy: NDArray[np.float64], segments: NDArray[np.float64],
+                   radius: float) -> Mask:
+    """Which grid points lie closer than ``radius`` to one of the segments (rows ax, ay, bx, by)."""
+    near = np.zeros(gx.shape, dtype=bool)
+    xs, ys = gx[0], gy[:, 0]
+    r = radius - 1e-12
+    for seg in segments:
+        win = _window(xs, ys, (min(seg[0], seg[2]), min(seg[1], seg[3]), max(seg[0], seg[2]),
+                               max(seg[1], seg[3])), r)
+        if win is not None:
+            near[win] |= _segment_distance2(seg, gx[win], gy[win])[0] < r * r
+    return near
+
+
 def _blocked(gx: NDArray[np.float64], gy: NDArray[np.float64], shapes: Sequence[shapely.Geometry],
              radius: float) -> Mask:
     """Which grid points lie closer than ``radius`` to one of the shapes (inside a polygon
@@ -142,11 +195,7 @@ def _blocked(gx: NDArray[np.float64], gy: NDArray[np.float64], shapes: Sequence[
             if win is not None:
                 near[win] |= _distance2(rect, gx[win], gy[win]) < r2
             continue
-        for seg in _segments(shape):
-            win = _window(xs, ys, (min(seg[0], seg[2]), min(seg[1], seg[3]), max(seg[0], seg[2]),
-                                   max(seg[1], seg[3])), r)
-            if win is not None:
-                near[win] |= _segment_distance2(seg, gx[win], gy[win])[0] < r2
+        near |= _near_segments(gx, gy, _segments(shape), radius)
         if shape.geom_type.endswith("Polygon"):
             win = _window(xs, ys, shape.bounds, 0.0)
             if win is not None:
@@ -173,7 +222,7 @@ class FreeSpace:
         x0, y0, x1, y1 = poly.bounds
         w, h = max(1, math.ceil((x1 - x0) / cell)), max(1, math.ceil((y1 - y0) / cell))
         gx, gy = np.meshgrid(x0 + (np.arange(w) + 0.5) * cell, y0 + (np.arange(h) + 0.5) * cell)
-        open_ = shapely.contains_xy(poly, gx, gy) & ~_blocked(gx, gy, [solid_walls(ring, gaps)], radius)
+        open_ = _inside(poly, gx, gy) & ~_near_segments(gx, gy, _solid_segments(ring, gaps), radius)
         free = open_ & ~_blocked(gx, gy, obstacles, radius) if obstacles else open_.copy()
         return cls(gx.ravel(), gy.ravel(), (h, w), open_.ravel(), free.ravel())
 
@@ -198,13 +247,16 @@ class FreeSpace:
         free = (self.open if empty else self.free).reshape(self.shape)
         reached = seeds.reshape(self.shape) & free
         # Alternate sweeps along rows and columns: each marks every run of free cells that holds
-        # a reached cell, so a path needs one sweep per turn, not one step per cell.
+        # a reached cell, so a path needs one sweep per turn, not one step per cell. A sweep
+        # that adds nothing ends it: the other direction's sweep, just done, is closed already.
+        reached = _spread_runs(reached, free)
+        count, rows = int(np.count_nonzero(reached)), False
         while True:
-            before = int(reached.sum())
-            reached = _spread_runs(reached, free)
-            reached = _spread_runs(reached.T, free.T).T
-            if int(reached.sum()) == before:
+            reached = _spread_runs(reached, free) if rows else _spread_runs(reached.T, free.T).T
+            now = int(np.count_nonzero(reached))
+            if now == count:
                 return np.ascontiguousarray(reached).ravel()
+            count, rows = now, not rows
 
     def reaches(
         self, reached: Mask, fp: Polygon, reach: float,
