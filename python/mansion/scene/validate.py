@@ -266,6 +266,7 @@ class _HouseCheck:
             polys[room.id] = poly
         ids = list(polys)
         tree = STRtree([polys[i] for i in ids])
+        self.room_tree, self.room_ids = tree, ids
         for k, rid in enumerate(ids):
             for j in tree.query(polys[rid]):
                 other = ids[int(j)]
@@ -295,8 +296,8 @@ class _HouseCheck:
                 continue
             if poly.contains(Point(seg.side_point(True))):
                 self.faces[wall.id] = True
-            elif poly.contains(Point(seg.side_point(False))) and not any(
-                p.contains(Point(seg.side_point(True))) for p in self.polys.values()
+            elif poly.contains(Point(seg.side_point(False))) and not len(
+                self.room_tree.query(Point(seg.side_point(True)), predicate="within")
             ):
                 self.faces[wall.id] = False
             else:
@@ -442,8 +443,7 @@ class _HouseCheck:
     def objects(self) -> None:
         db = asset_ids()
         floor: dict[str, list[_Placed]] = defaultdict(list)
-        ids = list(self.polys)
-        tree = STRtree([self.polys[i] for i in ids])
+        ids, tree = self.room_ids, self.room_tree
         margins: dict[str, BaseGeometry] = {}
         for obj in self.house.objects:
             p = Point(obj.position.x, obj.position.z)
