@@ -32,6 +32,7 @@ from mansion.exceptions import (
 from mansion.placement.assets import database
 from mansion.placement.check import footprint
 from mansion.scene import write_scenes
+from mansion.scene.house import house_text
 from mansion.scene.validate import validate_path
 from mansion.sim import BuildingEnv
 from mansion.sim.agents import OracleAgent
@@ -130,7 +131,7 @@ def test_patch_replays_to_the_variant_scenes(office: Path, paper_variant: Any) -
     v = load_variant(office, "snack-and-drink")
     for p in v.patch:
         base = json.loads((office / "scenes" / p.house).read_bytes())
-        replayed = (json.dumps(patch_house(base, p), indent=1) + "\n").encode()
+        replayed = house_text(patch_house(base, p)).encode()
         assert replayed == (paper_variant.variant / "scenes" / p.house).read_bytes()
 
 
@@ -416,7 +417,7 @@ def test_patch_records_moves_removals_and_changes(tools: SceneTools) -> None:
     assert [m.id for m in p.moved] == [book] and p.moved[0].parent == counter
     assert [r.id for r in p.removed] == [bowl]
     assert [a.object["assetId"] for a in p.added] == ["Apple_1"] and p.changed[0].set == {"openness": 1.0}
-    assert (json.dumps(patch_house(base, p), indent=1) + "\n").encode() == tools.ws.house_bytes(1)
+    assert house_text(patch_house(base, p)).encode() == tools.ws.house_bytes(1)
 
 
 # -- the command line ---------------------------------------------------------------------------
@@ -539,7 +540,7 @@ def test_a_full_destination_is_cleared_largest_first(office: Path, tmp_path: Pat
     floor0 = next(p for p in v.patch if p.floor == 0)
     assert len(floor0.removed) == len(removed) and not floor0.added
     base = json.loads((root / "scenes" / "floor_0.json").read_bytes())
-    assert (json.dumps(patch_house(base, floor0), indent=1) + "\n").encode() == (r.variant / "scenes" / "floor_0.json").read_bytes()
+    assert house_text(patch_house(base, floor0)).encode() == (r.variant / "scenes" / "floor_0.json").read_bytes()
     assert run_task(BuildingEnv(root, variant="cleared"), r.task, OracleAgent).success
 
 

@@ -752,3 +752,39 @@ def test_furniture_checks_share_the_grown_obstacles() -> None:
     assert navigation.blocked_entrances(house, obstacles=shared) == blocked
     with pytest.raises(ValueError, match="clearance"):
         navigation.blocked_entrances(house, obstacles=navigation.Obstacles.of(house, 0.2))
+
+
+def test_house_text_is_json_dumps_but_for_small_numbers_written_in_full() -> None:
+    """Every house file goes through house_text: pydantic's serializer, with json.dumps's
+    layout and ASCII escapes, which reads back to the same values."""
+    import random
+
+    from mansion.scene.house import house_text
+
+    rng = random.Random(3)
+    words = ["door|1|2", "1×1", "café", "😀 emoji", 'quote " and \\ backslash', "tab\tnew\nline", ""]
+
+    def value(depth: int) -> Any:
+        kind = rng.randrange(7 if depth < 3 else 4)
+        if kind == 0:
+            return round(rng.uniform(-50, 50), rng.randrange(0, 16))
+        if kind == 1:
+            return rng.choice([0, -3, 10**12, True, False, None, -0.0, 1e300, 0.5e-3])
+        if kind == 2:
+            return rng.choice(words)
+        if kind == 3:
+            return rng.uniform(-1e-4, 1e-4) * 10 ** -rng.randrange(0, 4)
+        if kind in (4, 5):
+            return {rng.choice(words) + str(k): value(depth + 1) for k in range(rng.randrange(0, 4))}
+        return [value(depth + 1) for _ in range(rng.randrange(0, 4))]
+
+    differ = 0
+    for _ in range(300):
+        data = {"rooms": value(0), "objects": [value(1) for _ in range(3)]}
+        text = house_text(data)
+        assert text.isascii() and text.endswith("\n")
+        assert json.loads(text) == data
+        differ += text != json.dumps(data, indent=1) + "\n"
+        assert house_text(data, indent=None) == json.dumps(data) + "\n"
+    assert 0 < differ < 300  # only where a number lies between 1e-7 and 1e-4
+    assert house_text({"x": 3e-05, "y": 2.5}) == '{\n "x": 0.00003,\n "y": 2.5\n}\n'

