@@ -463,6 +463,28 @@ def test_core_moved_on_one_floor(tmp_path: Path) -> None:
     assert named(problems, "core-align", core["id"])
 
 
+def test_a_buildings_floor_files_get_the_problems_of_their_dicts(tmp_path: Path) -> None:
+    """validate_building parses floor files with pydantic's JSON parser and reads a file the
+    model rejects again as a dict: either way a floor's problems are validate_house's."""
+    manifest = write_scenes(golden_building(), tmp_path)
+    h = json.loads((tmp_path / "floor_0.json").read_text())
+    changes = {
+        # parses (the model's default rotation) but the loader fails
+        "rotations left out": lambda h: (h["objects"][0].pop("rotation"), h["objects"][1]["children"][0].pop("rotation")),
+        "a hole of one point": lambda h: h["doors"][0].update(holePolygon=h["doors"][0]["holePolygon"][:1]),
+        "schema errors": lambda h: (h["objects"][0].update(rotation=None), h["walls"][0].update(polygon="no"),
+                                    h["metadata"].update(schema="0.0.1")),
+        "a wall moved": lambda h: h["walls"][3]["polygon"][0].update(x=h["walls"][3]["polygon"][0]["x"] + 0.3),
+    }
+    for name, change in changes.items():
+        broken = copy.deepcopy(h)
+        change(broken)
+        (tmp_path / "floor_0.json").write_text(json.dumps(broken, indent=1))
+        got = [p for p in validate_path(manifest) if p.source.endswith("floor_0.json")]
+        want = validate_house(broken, source=str(tmp_path / "floor_0.json"))
+        assert got and got == want, name
+
+
 def test_bad_house_file_is_a_clear_error(tmp_path: Path) -> None:
     bad = tmp_path / "house.json"
     bad.write_text("{not json")

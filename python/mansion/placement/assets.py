@@ -72,6 +72,7 @@ class AssetDatabase:
         self.on_floor: dict[str, bool] = ann["onFloor"]
         self.kinematic: dict[str, bool] = ann["isKinematic"]
         self.pickupable: dict[str, bool] = ann["isPickupable"]
+        self._small: dict[str, tuple[tuple[str, ...], tuple[float, ...]]] = {}
 
     @property
     def types(self) -> list[str]:
@@ -102,14 +103,17 @@ class AssetDatabase:
     def small_for(self, receptacle: str, n: int, top: tuple[float, float], rng: random.Random) -> list[Asset]:
         """``n`` small objects AI2-THOR scenes put on this receptacle type, drawn by frequency,
         each small enough for the top (``top`` = width, depth)."""
-        weights = {
-            t: p for t, p in self.receptacles.get(receptacle, {}).items()
-            if t in self.assets and self.pickupable.get(t, False) and not self.on_floor.get(t, False)
-        }
+        if receptacle not in self._small:  # the draw's types and weights, once per receptacle
+            weights = {
+                t: p for t, p in self.receptacles.get(receptacle, {}).items()
+                if t in self.assets and self.pickupable.get(t, False) and not self.on_floor.get(t, False)
+            }
+            pairs = sorted(weights.items())
+            self._small[receptacle] = (tuple(t for t, _ in pairs), tuple(p for _, p in pairs))
+        types, probs = self._small[receptacle]
         out: list[Asset] = []
-        if not weights:
+        if not types:
             return out
-        types, probs = zip(*sorted(weights.items()))
         for _ in range(n * 3):
             if len(out) == n:
                 break
