@@ -28,6 +28,7 @@ from dataclasses import dataclass
 import shapely
 from shapely.geometry import LineString, MultiLineString, Point, Polygon
 from shapely.geometry.base import BaseGeometry
+from shapely.strtree import STRtree
 
 from mansion.placement import check
 from mansion.scene.databases import asset_ids
@@ -396,25 +397,36 @@ def blocked_entrances(
     c = radius + margin
     p = Point(start)
 
-    def reached(space: BaseGeometry) -> BaseGeometry | None:
-        parts = _parts(space)
+    def reached(parts: list[Polygon]) -> Polygon | None:
         if not parts:
             return None
         near = min(parts, key=lambda g: g.distance(p))
         return near if near.distance(p) <= 0.5 else None
 
     empty = free_space(house, c) if space is None else space
-    bare = reached(empty)
-    grown = _obstacles(house, c, obstacles).grown
-    full = reached(empty.difference(shapely.union_all(grown)) if grown else empty)
+    bare = reached(_parts(empty))
     if bare is None:
         return []
+    grown = _obstacles(house, c, obstacles).grown
+    furnished = _parts(empty.difference(shapely.union_all(grown))) if grown else _parts(empty)
+    full = reached(furnished)
+    # A doorstep that no grown object and no piece of furnished space other than the reached
+    # one touches is reached with the objects as without them (there the furnished space is the
+    # empty one, all of it reached), so only the others are measured. The test uses the step's
+    # box (square caps: it holds the round-capped step).
+    differ = STRtree([*grown, *(g for g in furnished if g is not full)]) if full is not None else None
     polys = _room_polygons(house)
     out = []
     for rid, ways in room_entrances(house).items():
         poly = polys.get(rid)
         if poly is None or not ways:
             continue
+        if differ is not None:
+            boxes = shapely.buffer(shapely.linestrings([[e.a, e.b] for e in ways]), c + _DOORSTEP, cap_style="square")
+            touched = set(differ.query(boxes, predicate="intersects")[0].tolist())
+            ways = [e for k, e in enumerate(ways) if k in touched]
+            if not ways:
+                continue
         # each doorstep lies in the room: cut the floor-wide spaces to it once, not per door
         bare_here = bare.intersection(poly)
         full_here = full.intersection(poly) if full is not None else None
