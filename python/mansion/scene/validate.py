@@ -294,10 +294,11 @@ class _HouseCheck:
                 if wall.room_id not in {r.id for r in self.house.rooms}:
                     self.add("wall-room", wall.id, f"names room {wall.room_id!r}, which does not exist")
                 continue
-            if poly.contains(Point(seg.side_point(True))):
+            right = seg.side_point(True)
+            if shapely.contains_xy(poly, *right):
                 self.faces[wall.id] = True
-            elif poly.contains(Point(seg.side_point(False))) and not len(
-                self.room_tree.query(Point(seg.side_point(True)), predicate="within")
+            elif shapely.contains_xy(poly, *seg.side_point(False)) and not len(
+                self.room_tree.query(Point(right), predicate="within")
             ):
                 self.faces[wall.id] = False
             else:
@@ -335,8 +336,11 @@ class _HouseCheck:
                          f"{poly.exterior.length:.3f} m boundary")
                 continue
             boundary = poly.exterior
-            for s in segs:
-                if boundary.distance(Point(s.at(s.length / 2))) > 1e-3 or boundary.distance(Point(s.p0)) > 1e-3:
+            # each wall's middle and start, measured in one call
+            ends = np.array([[s.at(s.length / 2), s.p0] for s in segs]).reshape(-1, 2)
+            far = (shapely.distance(boundary, shapely.points(ends)) > 1e-3).reshape(-1, 2).any(axis=1)
+            for s, off in zip(segs, far.tolist(), strict=True):
+                if off:
                     self.add("wall-closure", rid, f"a wall at {s.p0} → {s.p1} is not on its boundary")
             # Equal length and all on the boundary: any overlap would leave a gap elsewhere.
             lines: dict[Any, list[tuple[float, float]]] = defaultdict(list)
@@ -445,10 +449,14 @@ class _HouseCheck:
         floor: dict[str, list[_Placed]] = defaultdict(list)
         ids, tree = self.room_ids, self.room_tree
         margins: dict[str, BaseGeometry] = {}
-        for obj in self.house.objects:
-            p = Point(obj.position.x, obj.position.z)
-            # the rooms covering the centre, in the house's order (the tree only narrows them)
-            inside = [ids[k] for k in sorted(int(j) for j in tree.query(p, predicate="covered_by"))]
+        # the rooms covering each object's centre, in the house's order (one query for all)
+        covering: dict[int, list[int]] = defaultdict(list)
+        if self.house.objects:
+            centres = shapely.points([(o.position.x, o.position.z) for o in self.house.objects])
+            for k, j in zip(*tree.query(centres, predicate="covered_by").tolist(), strict=True):
+                covering[k].append(j)
+        for n, obj in enumerate(self.house.objects):
+            inside = [ids[k] for k in sorted(covering.get(n, []))]
             if not inside:
                 self.add("object-in-room", obj.id, f"centre ({obj.position.x:.3f}, {obj.position.z:.3f}) is in no room")
                 continue
