@@ -755,6 +755,8 @@ def test_a_strip_narrower_than_the_agent_is_not_walkable() -> None:
 def test_furniture_checks_share_the_grown_obstacles() -> None:
     """The validator grows a floor's objects once (navigation.Obstacles) for the two furniture
     checks; they answer as when each grows its own, and refuse obstacles grown for another agent."""
+    import shapely
+
     from mansion.scene import navigation
 
     h = _loop()
@@ -764,8 +766,12 @@ def test_furniture_checks_share_the_grown_obstacles() -> None:
     house = House.model_validate(h)
     c = navigation.AGENT_RADIUS + navigation.MARGIN
     shared = navigation.Obstacles.of(house, c)
-    assert len(shared.grown) == len(navigation.floor_objects(house)) == 2
-    assert all(g.contains(fp) for g, fp in zip(shared.grown, navigation.floor_objects(house), strict=True))
+    assert shared.footprints == navigation.floor_objects(house) and len(shared.footprints) == 2
+    # grown as one geometry: each footprint grown and the union of the two
+    grown = shared.grown(shared.footprints)
+    each = shapely.union_all([fp.buffer(c - navigation._TOL) for fp in shared.footprints])
+    assert grown.symmetric_difference(each).area < 1e-9 and grown.area > sum(fp.area for fp in shared.footprints)
+    assert shared.grown([]) is None
     cut = navigation.disconnected_entrances(house)
     blocked = navigation.blocked_entrances(house)
     assert [c.room for c in cut] == ["b"] and cut[0].furniture

