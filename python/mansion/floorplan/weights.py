@@ -108,8 +108,9 @@ class SolverSettings(BaseModel):
     - ``reseeds``: in a round whose parent keeps the leftover, times the round's winner may be
       cut again with its shortest child's seed moved into the largest piece of that leftover
       (a child below 80 % of its target, the parent holding half that target beyond its own);
-      the new winner is kept when the children's total shortfall falls. 0: never, the paper's
-      cutting node (and given seeds stay where they were given).
+      each re-cut draws a tenth of a retry's candidates, and the new winner is kept when the
+      children's total shortfall falls and their rooms are no more elongated or jagged. 0: never,
+      the paper's cutting node (and given seeds stay where they were given).
 
     How the defaults were chosen (``mansion eval floorplan`` on the T2D development plans, even
     ids, hierarchical mode, micro / macro IoU; and the solver's own benchmark, whose seeds come
