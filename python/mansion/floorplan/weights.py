@@ -105,12 +105,12 @@ class SolverSettings(BaseModel):
     - ``growth``: side choice of the rectangular growth phase: ``"balanced"`` keeps each room
       centred on its seed until a wall or a neighbour stops it (so seeds act as centroids);
       ``"longest"`` grows the longest free side first, as in Lopes et al. (2010);
-    - ``reseeds``: in a round whose parent keeps the leftover, times the round's winner may be
-      cut again with its shortest child's seed moved into the largest piece of that leftover
-      (a child below 80 % of its target, the parent holding half that target beyond its own);
-      each re-cut draws a tenth of a retry's candidates, and the new winner is kept when the
-      children's total shortfall falls and their rooms are no more elongated or jagged. 0: never,
-      the paper's cutting node (and given seeds stay where they were given).
+    - ``reseeds``: in a round whose parent keeps the leftover, times the round may be cut again
+      with the seed of a child its winner left short (below 80 % of its target, the parent
+      holding half that target beyond its own) moved into the largest piece of that leftover;
+      each re-cut draws a tenth of a retry's candidates (at the third retry's radii), and its
+      winner is kept when the children's total shortfall falls and their rooms are no more
+      elongated or jagged. 0: never, the paper's cutting node (given seeds stay where given).
 
     How the defaults were chosen (``mansion eval floorplan`` on the T2D development plans, even
     ids, hierarchical mode, micro / macro IoU; and the solver's own benchmark, whose seeds come
