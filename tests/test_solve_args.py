@@ -36,6 +36,7 @@ def test_default_options_match_the_binding_contract() -> None:
         "strict_backtracks": None,
         "refine_walls": True,
         "growth": "balanced",
+        "reseeds": 0,
     }
 
 

@@ -75,6 +75,8 @@ pub struct SolveOptions {
     pub growth: GrowthRule,
     /// See [`CutOptions::refine_walls`].
     pub refine_walls: bool,
+    /// See [`CutOptions::reseeds`].
+    pub reseeds: usize,
     /// Times a failed round may send the solver back to re-cut an earlier one, per floor
     /// ([`MAX_BACKTRACKS`] by default). A budget in counts, not time, so results stay
     /// deterministic: generated buildings give their strict first attempt a small one, since a
@@ -107,6 +109,7 @@ impl Default for SolveOptions {
             exhaustive: false,
             growth: c.growth,
             refine_walls: true,
+            reseeds: 0,
             max_backtracks: MAX_BACKTRACKS,
             strict_backtracks: None,
         }
@@ -644,6 +647,7 @@ pub fn solve_floor(
         exhaustive: opts.exhaustive,
         growth: opts.growth,
         refine_walls: opts.refine_walls,
+        reseeds: opts.reseeds,
     };
     let mut grid = floor.grid.clone();
     let mut exists: Vec<bool> = (0..n)

@@ -39,6 +39,7 @@ __all__ = [
     "MIN_CLEAR_WIDTH",
     "RELAXED_ATTEMPTS",
     "RELAXED_CLEAR_WIDTH",
+    "RESEEDS",
     "Progress",
     "copy_floor",
     "derived_seed",
@@ -69,6 +70,13 @@ MIN_CLEAR_WIDTH = 1.5
 #: The width every rule falls to when a floor cannot be laid out at :data:`MIN_CLEAR_WIDTH`: still
 #: wide enough for the agent.
 RELAXED_CLEAR_WIDTH = 1.0
+
+#: Re-seedings per cut round of a generated floor (``SolverSettings.reseeds``): a child that a
+#: round leaves below 80 % of its target, while the parent keeps a piece of leftover where no
+#: child was seeded, is grown again from that piece. The offline planner's seeds crowd some
+#: children among others that reach their targets first (a ward wing laid at 65 % of its target
+#: beside a corridor at three times its own); see the README's realism section for the figures.
+RESEEDS = 2
 
 Progress = Callable[[str, int, int], None]
 
@@ -136,8 +144,8 @@ def _widths_at_most(graph: RoomGraph, width: float | None) -> RoomGraph:
 
 def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSettings:
     """The solver settings of generated floors: the floor-wide minimum width (``width`` m,
-    :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``."""
-    return SolverSettings(min_width=max(1, math.ceil(width / cell_size - 1e-6)))
+    :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``, and :data:`RESEEDS`."""
+    return SolverSettings(min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS)
 
 
 def _solve(

@@ -104,7 +104,13 @@ class SolverSettings(BaseModel):
       cleanup, width and topology checks as a candidate); False: the paper's cutting node;
     - ``growth``: side choice of the rectangular growth phase: ``"balanced"`` keeps each room
       centred on its seed until a wall or a neighbour stops it (so seeds act as centroids);
-      ``"longest"`` grows the longest free side first, as in Lopes et al. (2010).
+      ``"longest"`` grows the longest free side first, as in Lopes et al. (2010);
+    - ``reseeds``: in a round whose parent keeps the leftover, times the round may be cut again
+      with the seed of a child its winner left short (below 80 % of its target, the parent
+      holding half that target beyond its own) moved into the largest piece of that leftover;
+      each re-cut draws a tenth of a retry's candidates (at the third retry's radii), and its
+      winner is kept when the children's total shortfall falls and their rooms are no more
+      elongated or jagged. 0: never, the paper's cutting node (given seeds stay where given).
 
     How the defaults were chosen (``mansion eval floorplan`` on the T2D development plans, even
     ids, hierarchical mode, micro / macro IoU; and the solver's own benchmark, whose seeds come
@@ -142,6 +148,7 @@ class SolverSettings(BaseModel):
     strict_backtracks: int | None = Field(default=None, ge=0)
     refine_walls: bool = True
     growth: Literal["balanced", "longest"] = "balanced"
+    reseeds: int = Field(default=0, ge=0)
 
     @model_validator(mode="after")
     def _check_gammas(self) -> SolverSettings:
