@@ -80,6 +80,19 @@ def test_pronouns_and_the_room_continue_the_subject() -> None:
     }
 
 
+def test_it_after_a_list_of_other_rooms_is_the_sentence_subject() -> None:
+    # the rooms listed after "with" are placed relative to the master; "It" is still the master
+    text = (
+        "The master room is on the east side with the living room at the northwest corner, the common "
+        "room to the north and the kitchen to the west. It is approximately 12 feet wide by 20 feet deep."
+    )
+    assert [(rid, w) for rid, w, _, _, _ in sizes(text)] == [("master_room_1", 3.66)]
+    assert ("living_room_0", "position", "northwest", ()) in facts(text)
+    # a room opening a new description in a run-on sentence still takes the pronoun
+    run_on = "kitchen at north side 8*4 feet with the bathroom at the south west corner of the house. It is 5 by 6 feet"
+    assert [rid for rid, *_ in sizes(run_on)][-1] == "kitchen_2"
+
+
 def test_descriptions_without_full_stops_are_split_at_each_room() -> None:
     text = "balcony south east direction 20*2 feet bathroom at north west corner size 10*4 feet kitchen at north side 8*4 feet"
     assert facts(text) >= {
