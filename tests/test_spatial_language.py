@@ -465,3 +465,56 @@ def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
     preds = [c, a, b]
     assert _agreement(1, preds) > _agreement(0, preds)
     assert _agreement(0, [a]) == 0.0
+
+
+def test_when_no_seed_set_can_be_laid_out_other_solver_seeds_are_tried(monkeypatch: pytest.MonkeyPatch) -> None:
+    from mansion.eval.t2d import T2DPlan
+    from mansion.eval.text_placement import solve_from_text
+    from mansion.exceptions import InfeasibleLayoutError
+
+    plan = T2DPlan.model_validate(make_plan(3))
+    calls: list[int] = []
+
+    def fails(seeds):
+        raise InfeasibleLayoutError("no layout under this random seed")
+
+    def reseed(seeds, k):
+        calls.append(k)
+        if k < 2:
+            raise InfeasibleLayoutError("still none")
+        return np.zeros((64, 64), dtype=int), _Layout()
+
+    class _Layout:
+        grid = None
+
+    # the stand-in layouts have no grid to compare with the text
+    monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
+    seeds, pred, _ = solve_from_text(plan, "The kitchen is in the north.", fails, lambda: pytest.fail("no fallback"), reseed)
+    assert seeds is not None and pred.shape == (64, 64)
+    # round 1 fails for every seed set, round 2 keeps them all; no third round
+    assert set(calls) == {1, 2}
+    # without a reseed the fallback is used at once
+    seeds, pred, _ = solve_from_text(plan, "The kitchen is in the north.", fails, lambda: ("heuristic", None))
+    assert seeds is None and pred == "heuristic"
+
+
+def test_the_heuristic_fallback_tries_other_solver_seeds(monkeypatch: pytest.MonkeyPatch) -> None:
+    import mansion.eval.floorplan as fp
+    from mansion.exceptions import InfeasibleLayoutError
+
+    seen: list[int] = []
+
+    def solve_plan(plan, *, rng_seed, heuristic, **kw):
+        assert heuristic
+        seen.append(rng_seed)
+        if rng_seed < 13:
+            raise InfeasibleLayoutError("none under this seed")
+        return "layout"
+
+    monkeypatch.setattr(fp, "solve_plan", solve_plan)
+    assert fp._heuristic_solve(None, rng_seed=10) == "layout" and seen == [10, 11, 12, 13]
+    seen.clear()
+    monkeypatch.setattr(fp, "HEURISTIC_TRIES", 2)
+    with pytest.raises(InfeasibleLayoutError):
+        fp._heuristic_solve(None, rng_seed=0)
+    assert seen == [0, 1]
