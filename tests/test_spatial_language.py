@@ -80,6 +80,19 @@ def test_pronouns_and_the_room_continue_the_subject() -> None:
     }
 
 
+def test_it_after_a_list_of_other_rooms_is_the_sentence_subject() -> None:
+    # the rooms listed after "with" are placed relative to the master; "It" is still the master
+    text = (
+        "The master room is on the east side with the living room at the northwest corner, the common "
+        "room to the north and the kitchen to the west. It is approximately 12 feet wide by 20 feet deep."
+    )
+    assert [(rid, w) for rid, w, _, _, _ in sizes(text)] == [("master_room_1", 3.66)]
+    assert ("living_room_0", "position", "northwest", ()) in facts(text)
+    # a room opening a new description in a run-on sentence still takes the pronoun
+    run_on = "kitchen at north side 8*4 feet with the bathroom at the south west corner of the house. It is 5 by 6 feet"
+    assert [rid for rid, *_ in sizes(run_on)][-1] == "kitchen_2"
+
+
 def test_descriptions_without_full_stops_are_split_at_each_room() -> None:
     text = "balcony south east direction 20*2 feet bathroom at north west corner size 10*4 feet kitchen at north side 8*4 feet"
     assert facts(text) >= {
@@ -452,3 +465,56 @@ def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
     preds = [c, a, b]
     assert _agreement(1, preds) > _agreement(0, preds)
     assert _agreement(0, [a]) == 0.0
+
+
+def test_when_no_seed_set_can_be_laid_out_other_solver_seeds_are_tried(monkeypatch: pytest.MonkeyPatch) -> None:
+    from mansion.eval.t2d import T2DPlan
+    from mansion.eval.text_placement import solve_from_text
+    from mansion.exceptions import InfeasibleLayoutError
+
+    plan = T2DPlan.model_validate(make_plan(3))
+    calls: list[int] = []
+
+    def fails(seeds):
+        raise InfeasibleLayoutError("no layout under this random seed")
+
+    def reseed(seeds, k):
+        calls.append(k)
+        if k < 2:
+            raise InfeasibleLayoutError("still none")
+        return np.zeros((64, 64), dtype=int), _Layout()
+
+    class _Layout:
+        grid = None
+
+    # the stand-in layouts have no grid to compare with the text
+    monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
+    seeds, pred, _ = solve_from_text(plan, "The kitchen is in the north.", fails, lambda: pytest.fail("no fallback"), reseed)
+    assert seeds is not None and pred.shape == (64, 64)
+    # round 1 fails for every seed set, round 2 keeps them all; no third round
+    assert set(calls) == {1, 2}
+    # without a reseed the fallback is used at once
+    seeds, pred, _ = solve_from_text(plan, "The kitchen is in the north.", fails, lambda: ("heuristic", None))
+    assert seeds is None and pred == "heuristic"
+
+
+def test_the_heuristic_fallback_tries_other_solver_seeds(monkeypatch: pytest.MonkeyPatch) -> None:
+    import mansion.eval.floorplan as fp
+    from mansion.exceptions import InfeasibleLayoutError
+
+    seen: list[int] = []
+
+    def solve_plan(plan, *, rng_seed, heuristic, **kw):
+        assert heuristic
+        seen.append(rng_seed)
+        if rng_seed < 13:
+            raise InfeasibleLayoutError("none under this seed")
+        return "layout"
+
+    monkeypatch.setattr(fp, "solve_plan", solve_plan)
+    assert fp._heuristic_solve(None, rng_seed=10) == "layout" and seen == [10, 11, 12, 13]
+    seen.clear()
+    monkeypatch.setattr(fp, "HEURISTIC_TRIES", 2)
+    with pytest.raises(InfeasibleLayoutError):
+        fp._heuristic_solve(None, rng_seed=0)
+    assert seen == [0, 1]

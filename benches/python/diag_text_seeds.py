@@ -36,6 +36,7 @@ import numpy as np
 from mansion.eval.t2d import GRID, iter_plans, node_id, plan_ids
 from mansion.eval.text_placement import text_problem
 from mansion.planning.spatial_language import DIRECTIONS
+from mansion.planning.spatial_layout import LayoutWeights, rectangle_seeds
 from mansion.planning.spatial_seeds import SeedWeights, place_seeds
 
 _FEET = 0.3048
@@ -60,8 +61,12 @@ def main() -> None:
     ap.add_argument("--limit", type=int, default=150)
     ap.add_argument("--worst", type=int, default=15)
     ap.add_argument("--weights", default="", help="SeedWeights overrides, e.g. relation=0,overlap=0")
+    ap.add_argument("--rectangles", default=None, help="score the rectangle layout's seeds instead "
+                    "(spatial_layout.rectangle_seeds started from the seeds above), with LayoutWeights "
+                    "overrides, e.g. '' or gap=0.5")
     args = ap.parse_args()
     overrides = SeedWeights(**{k: (type(getattr(SeedWeights(), k))(v) if not isinstance(getattr(SeedWeights(), k), bool) else v == "1") for k, v in (kv.split("=") for kv in args.weights.split(",") if kv)})
+    layout_weights = LayoutWeights(**{k: float(v) for k, v in (kv.split("=") for kv in (args.rectangles or "").split(",") if kv)})
     errs: dict[str, list[float]] = defaultdict(list)
     axis_errs: dict[str, list[tuple[float, float]]] = defaultdict(list)
     swapped = 0
@@ -77,6 +82,8 @@ def main() -> None:
         description = (Path(args.data) / "text" / f"{pid}.txt").read_text(encoding="utf-8")
         p = text_problem(plan, description)
         seeds, _ = place_seeds(p.reading, p.rooms, p.free, p.adjacency, weights=overrides)
+        if args.rectangles is not None:
+            seeds = rectangle_seeds(p.reading, p.rooms, p.free, p.adjacency, start=seeds, weights=layout_weights)
         true = {node_id(r): (r.centroid[0] / 4, GRID - r.centroid[1] / 4) for r in plan.rooms}
         boxes = {node_id(r): r.bbox for r in plan.rooms}
         by_type: dict[str, list[str]] = defaultdict(list)

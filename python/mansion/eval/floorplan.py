@@ -113,6 +113,24 @@ def solve_plan(
     return solver_to_mask(layout.grid, inputs.classes), layout
 
 
+#: Random seeds of the solver the heuristic fallback of ``seeds="text"`` tries in turn (the
+#: plans that reach it are the ones no seed set read from the text can be laid out for).
+HEURISTIC_TRIES = 8
+
+
+def _heuristic_solve(plan: T2DPlan, *, rng_seed: int, **kw: Any) -> Any:
+    """:func:`solve_plan` with the solver's own seed heuristic, under up to
+    :data:`HEURISTIC_TRIES` random seeds; the last failure is raised when none lays it out."""
+    error: MansionError | None = None
+    for k in range(HEURISTIC_TRIES):
+        try:
+            return solve_plan(plan, rng_seed=rng_seed + k, heuristic=True, **kw)
+        except MansionError as exc:
+            error = exc
+    assert error is not None
+    raise error
+
+
 class FromText(BaseModel):
     """A job's seeds are to be read from this description in the worker (``seeds="text"``)."""
 
@@ -135,7 +153,8 @@ def _score_one(job: Job) -> tuple[PlanResult, Any]:
             seeds, pred, layout = solve_from_text(
                 plan, seeds.description,
                 lambda s: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=s),
-                lambda: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, heuristic=True),
+                lambda: _heuristic_solve(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed),
+                lambda s, k: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed + k, seeds=s),
             )
             heuristic = seeds is None
         else:

@@ -22,6 +22,7 @@ from typing import Any
 from mansion.eval.t2d import CELL_SIZE, GRID, T2DPlan, protocol_inputs
 from mansion.exceptions import MansionError
 from mansion.planning.spatial_language import KnownRoom, Reading, read_description
+from mansion.planning.spatial_layout import LayoutWeights, rectangle_seeds
 from mansion.planning.spatial_seeds import (
     FreeGrid, SeedReport, SeedRoom, SeedWeights, layout_disagreement, match_rooms, place_seeds,
 )
@@ -48,6 +49,11 @@ _WEIGHTINGS: tuple[dict[str, Any], ...] = (
 VARIANTS: tuple[dict[str, Any], ...] = tuple(
     {**v, "corner": corner, "unplaced_to_neighbours": True} for corner in (4.0, 16.0) for v in _WEIGHTINGS
 )
+#: Seed sets from rooms laid out as rectangles (:mod:`mansion.planning.spatial_layout`): walls on
+#: the walls the text names, neighbours touching, no overlaps. Beside the sixteen point solves
+#: they raised the kept layouts on the first 100 dev plans from 54.2 to 55.4 micro-IoU (odd ids
+#: +1.8, even +0.7); alone, the third is the best single seed set (53.6, the point solves 44.8-48.9).
+RECTANGLES: tuple[LayoutWeights, ...] = (LayoutWeights(), LayoutWeights(gap=0.5), LayoutWeights(inside=8.0, shape=4.0))
 
 
 @dataclass(frozen=True)
@@ -89,12 +95,15 @@ def solve_from_text(
     description: str,
     solve: Callable[[dict[str, tuple[float, float]]], tuple[Any, Any]],
     fallback: Callable[[], tuple[Any, Any]] | None = None,
+    reseed: Callable[[dict[str, tuple[float, float]], int], tuple[Any, Any]] | None = None,
 ) -> tuple[dict[str, tuple[float, float]] | None, Any, Any]:
-    """Try the seed sets of :data:`VARIANTS` with ``solve(seeds) -> (prediction, layout)`` and keep
-    the layout that agrees best with the text and with the other layouts. When no seed set can be
-    laid out, ``fallback()`` (the solver's own seed heuristic, which reads neither the text nor the
-    ground truth) is tried, and its seeds are reported as None; without one, or when it fails too,
-    the last :class:`MansionError` is raised."""
+    """Try the seed sets of :data:`VARIANTS` and :data:`RECTANGLES` with ``solve(seeds) ->
+    (prediction, layout)`` and keep the layout that agrees best with the text and with the other
+    layouts. When no seed set can be laid out, ``reseed(seeds, k)`` (the same solve under the
+    solver's k-th other random seed, k = 1 … :data:`RESEEDS`) tries them again, round by round;
+    when none of those can either, ``fallback()`` (the solver's own seed heuristic, which reads
+    neither the text nor the ground truth) is tried, and its seeds are reported as None; without
+    one, or when it fails too, the last :class:`MansionError` is raised."""
     p = text_problem(plan, description)
     base = SeedWeights()
     solved: list[tuple[float, dict[str, tuple[float, float]], Any, Any]] = []
@@ -102,16 +111,26 @@ def solve_from_text(
     tried: list[dict[str, tuple[float, float]]] = []
     for variant in VARIANTS:
         seeds, _ = place_seeds(p.reading, p.rooms, p.free, p.adjacency, weights=replace(base, **variant))
+        last = seeds
         if seeds in tried:
             continue
         tried.append(seeds)
-        try:
-            pred, layout = solve(seeds)
-        except MansionError as exc:
-            error = exc
-            continue
-        score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
-        solved.append((score, seeds, pred, layout))
+    # the rectangle layouts start from the last point solve (corners held firmly)
+    for lw in RECTANGLES:
+        seeds = rectangle_seeds(p.reading, p.rooms, p.free, p.adjacency, start=last, weights=lw)
+        if seeds not in tried:
+            tried.append(seeds)
+    for k in range(RESEEDS + 1 if reseed is not None else 1):
+        for seeds in tried:
+            try:
+                pred, layout = solve(seeds) if k == 0 else reseed(seeds, k)  # type: ignore[misc]
+            except MansionError as exc:
+                error = exc
+                continue
+            score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
+            solved.append((score, seeds, pred, layout))
+        if solved:
+            break
     if not solved:
         assert error is not None
         if fallback is None:
@@ -121,6 +140,11 @@ def solve_from_text(
     best = min(range(len(solved)), key=lambda k: solved[k][0] - CONSENSUS * _agreement(k, [s[2] for s in solved]))
     return solved[best][1], solved[best][2], solved[best][3]
 
+
+#: Rounds of other random seeds for the solver when no seed set can be laid out under the first
+#: (all 500 dev plans: of the 5 plans none of whose seed sets the solver could lay out, 2 are laid
+#: out within three more rounds; a failing solve is quick, a tenth of a second).
+RESEEDS = 3
 
 #: How much a layout's agreement with the other seed sets' layouts counts against its
 #: disagreement with the text: the text's errors scatter the layouts, what most of them share is

@@ -364,7 +364,13 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
     clauses: list[_Clause] = []
     subject: int | None = None
     for sentence in _split_sentences(tokens):
-        for piece in _run_on_split(sentence):
+        opening: int | None = None  # the subject before the sentence's list of other rooms
+        listed = False
+        for piece, listed in _run_on_split(sentence):
+            if listed and opening is None:
+                opening = subject
+            elif not listed:
+                opening = None
             first = re.search(r"R(\d+)\b", piece)
             # "Occupying most of the west side, the living room ...": the subject follows a
             # leading participle phrase, which is about it
@@ -390,6 +396,11 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
                 if later:
                     subject = int(later.group(1) or later.group(2))
             clauses.append(_Clause(piece, piece, subject))
+        # "The master is on the east side with the living room at the northwest corner. It is
+        # 12 feet wide": the rooms listed after "with" are placed relative to the sentence's
+        # subject, and the next sentence's "It" is still that subject
+        if listed and opening is not None:
+            subject = opening
 
     statements: list[Statement] = []
     unread: list[str] = []
@@ -416,30 +427,26 @@ _LINKS = frozenset(
 )
 
 
-def _run_on_split(sentence: str) -> list[str]:
+def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
     """Split a sentence at rooms that open a new description after a size ("... 10*4 feet R3
-    at ..."), the mark of descriptions written without full stops."""
-    cuts = [
-        m.start(1)
-        for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
-        if m.group(1) not in _LINKS and not m.group(1).startswith("R") and m.group(1) != "the"
-    ]
-    cuts = [c for c in cuts]
+    at ..."), the mark of descriptions written without full stops, and at a list of other rooms
+    ("with the R1 at the D:northwest corner"); each piece with whether it came from such a list."""
     cuts = [m.start(2) for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
             if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
         # "the 11x5 bathroom is ...": a size in front of the room is not the end of a description
         and not re.search(r"\b(?:the|a|an)\s+[\d.x*'\"]+\s*$", sentence[: m.start(2)])]
     # a request's list of rooms: "a clinic with a pharmacy on the east side, and a cafe in ..."
-    cuts += [m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?(?:D:\w+\s+)+(?:corner|(?:side|part|end|wing)\s+of\s+the\s+" + _PLACE + r"))", sentence)]
-    cuts = sorted(set(c for c in cuts if c > 0))
+    listed = {m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?(?:D:\w+\s+)+(?:corner|(?:side|part|end|wing)\s+of\s+the\s+" + _PLACE + r"))", sentence)}
+    listed -= set(cuts)
+    cuts = sorted(set(c for c in [*cuts, *listed] if c > 0))
     if not cuts:
-        return [sentence]
-    pieces, start = [], 0
+        return [(sentence, False)]
+    pieces, start, was_list = [], 0, False
     for c in cuts:
-        pieces.append(sentence[start:c])
-        start = c
-    pieces.append(sentence[start:])
-    return [p for p in pieces if p.strip()]
+        pieces.append((sentence[start:c], was_list))
+        start, was_list = c, c in listed
+    pieces.append((sentence[start:], was_list))
+    return [(p, flag) for p, flag in pieces if p.strip()]
 
 
 def _opens_description(rest: str) -> bool:
