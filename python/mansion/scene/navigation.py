@@ -162,9 +162,16 @@ def open_space(
 def without(space: BaseGeometry, obstacles: Iterable[Polygon], clearance: float) -> BaseGeometry:
     """``space`` less every point within ``clearance`` of an obstacle: the free space with them
     standing in it (equal to building it with them, without redoing the walls)."""
-    c = clearance - _TOL
-    blocked = [o.buffer(c) for o in obstacles]
-    return space.difference(shapely.union_all(blocked)) if blocked else space
+    blocked = _grow(list(obstacles), clearance)
+    return space.difference(blocked) if blocked is not None else space
+
+
+def _grow(footprints: list[Polygon], clearance: float) -> BaseGeometry | None:
+    """Where ``footprints`` keep the agent's centre: grown by the clearance (less the tolerance)
+    as one geometry, the union of each grown with round corners of 16 segments a quarter (as
+    :meth:`Polygon.buffer` grows it: the validator's answers on the real houses hang on it) in
+    40 % of the time. None for no footprint."""
+    return MultiPolygon(footprints).buffer(clearance - _TOL) if footprints else None
 
 
 def _inner_pieces(pieces: list[LineString], floor: BaseGeometry) -> list[LineString]:
@@ -292,11 +299,8 @@ class Obstacles:
         return [fp for rid, fp in zip(self.rooms, self.footprints, strict=True) if rid is None or rid == room]
 
     def grown(self, footprints: list[Polygon]) -> BaseGeometry | None:
-        """Where ``footprints`` keep the agent's centre: grown by the clearance (less the
-        tolerance) as one geometry, the union of each grown with round corners of 16 segments a
-        quarter (as :meth:`Polygon.buffer` grows it: the validator's answers on the real houses
-        hang on it) in 40 % of the time. None for no footprint."""
-        return MultiPolygon(footprints).buffer(self.clearance - _TOL) if footprints else None
+        """:func:`_grow` at these obstacles' clearance."""
+        return _grow(footprints, self.clearance)
 
 
 def _obstacles(house: House, clearance: float, given: Obstacles | None) -> Obstacles:
