@@ -731,9 +731,10 @@ def _checked(house: House | dict[str, Any], source: str) -> tuple[list[Problem],
     return _HouseCheck(parsed, source).run(), parsed
 
 
-def _read(path: Path) -> Any:
+def _read(path: Path, text: str | None = None) -> Any:
+    """The JSON in ``path`` (``text``: its contents, when read already)."""
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
+        return json.loads(path.read_text(encoding="utf-8") if text is None else text)
     except (OSError, ValueError) as exc:
         raise InvalidInputError(f"cannot read {str(path)!r}: {exc}") from exc
 
@@ -756,7 +757,7 @@ def _model_traps(house: House, source: str) -> list[Problem]:
 def _checked_file(path: Path) -> tuple[list[Problem], House | None]:
     """:func:`_checked` of a house JSON file. The text goes straight to the model (pydantic's
     JSON parser: a third of the time of :func:`json.loads` and validating the dict); a file the
-    model rejects is read again as a dict, so that every schema problem is named as before."""
+    model rejects is parsed again as a dict, so that every schema problem is named as before."""
     source = str(path)
     try:
         text = path.read_text(encoding="utf-8")
@@ -765,7 +766,7 @@ def _checked_file(path: Path) -> tuple[list[Problem], House | None]:
     try:
         parsed = House.model_validate_json(text)
     except ValidationError:
-        return _checked(_read(path), source)
+        return _checked(_read(path, text), source)
     traps = _model_traps(parsed, source)
     return (traps if traps else _HouseCheck(parsed, source).run()), parsed
 
