@@ -25,6 +25,7 @@ import math
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+import numpy as np
 import shapely
 from shapely.geometry import LineString, MultiLineString, MultiPolygon, Point, Polygon
 from shapely.geometry.base import BaseGeometry
@@ -122,7 +123,7 @@ def wall_pieces(all_walls: list[Wall], doors: list[Door]) -> list[LineString]:
             (a, b) = w1.segment()
             n = math.dist(a, b)
             holes.setdefault(door.wall1, []).append((n - hi, n - lo))
-    out = []
+    ends = []
     for wall in all_walls:
         if wall.empty:
             continue
@@ -133,8 +134,9 @@ def wall_pieces(all_walls: list[Wall], doors: list[Door]) -> list[LineString]:
         for t0, t1 in _cut((0.0, n), holes.get(wall.id, [])):
             p = (a[0] + (b[0] - a[0]) * t0 / n, a[1] + (b[1] - a[1]) * t0 / n)
             q = (a[0] + (b[0] - a[0]) * t1 / n, a[1] + (b[1] - a[1]) * t1 / n)
-            out.append(LineString([p, q]))
-    return out
+            ends.append((p, q))
+    # made in one call: a floor has a few hundred pieces
+    return list(shapely.linestrings(ends)) if ends else []
 
 
 def free_space(house: House, clearance: float, obstacles: Iterable[Polygon] = ()) -> BaseGeometry:
@@ -154,8 +156,10 @@ def open_space(
     inner = _inner_pieces(pieces, floor)
     if inner:
         # the pieces grown as one geometry: the same region as each grown and then unioned (no
-        # difference in area on fifteen dataset buildings' floors), in half the time
-        space = space.difference(MultiLineString(inner).buffer(c))
+        # difference in area on fifteen dataset buildings' floors), in half the time; merged
+        # into polylines first, whose round joins are the round caps they replace (the same
+        # region to 1e-9 m² on 185 dataset floors), in 60 % of that
+        space = space.difference(shapely.line_merge(MultiLineString(inner)).buffer(c))
     return without(space, obstacles, clearance)
 
 
@@ -179,13 +183,20 @@ def _inner_pieces(pieces: list[LineString], floor: BaseGeometry) -> list[LineStr
     same pieces), and not those on the floor's outline (its inward buffer already keeps the agent
     off them). The union of the buffers is the same; measured on a seven-storey hospital's
     floors, the free space takes 0.18 s instead of 0.43 s."""
+    if not pieces:
+        return []
     seen: dict[tuple[tuple[float, float], ...], LineString] = {}
-    for piece in pieces:
-        ends = sorted((round(x, 6), round(y, 6)) for x, y in piece.coords)
+    # every piece's points read in one call (a floor has a few hundred pieces)
+    coords = shapely.get_coordinates(pieces).tolist()
+    starts = np.cumsum([0, *shapely.get_num_coordinates(pieces).tolist()]).tolist()
+    for k, piece in enumerate(pieces):
+        ends = sorted((round(x, 6), round(y, 6)) for x, y in coords[starts[k]:starts[k + 1]])
         seen.setdefault(tuple(ends), piece)
     outline = floor.boundary.buffer(1e-6)
     shapely.prepare(outline)
-    return [s for s in seen.values() if not outline.covers(s)]
+    kept = list(seen.values())
+    on_outline = shapely.covers(outline, kept)
+    return [s for s, out in zip(kept, on_outline.tolist(), strict=True) if not out]
 
 
 def reached_rooms(space: BaseGeometry, rooms: dict[str, Polygon], start: Pt) -> set[str]:
@@ -197,7 +208,18 @@ def reached_rooms(space: BaseGeometry, rooms: dict[str, Polygon], start: Pt) -> 
     near = min(parts, key=lambda g: g.distance(p))
     if near.distance(p) > 0.5:
         return set()
-    return {rid for rid, poly in rooms.items() if near.intersection(poly).area > _AREA}
+    return {rid for rid, poly in rooms.items() if _clip(near, poly).area > _AREA}
+
+
+def _clip(space: BaseGeometry, poly: Polygon) -> BaseGeometry:
+    """``space.intersection(poly)``, with ``space`` first cut to the polygon's box by GEOS's fast
+    rectangle clipping: the overlay then sees only the room's share of a floor-wide space (a
+    third of the time on dataset floors). The fast clipping promises no valid output; should
+    the overlay reject it, the plain intersection answers."""
+    try:
+        return shapely.intersection(shapely.clip_by_rect(space, *poly.bounds), poly)
+    except shapely.errors.GEOSException:
+        return space.intersection(poly)
 
 
 def _parts(geom: BaseGeometry) -> list[Polygon]:
@@ -242,7 +264,7 @@ def unreachable_rooms(
     if near.distance(p) > 0.5:
         return None
     return [rid for rid, poly in _room_polygons(house).items()
-            if near.intersection(poly).area <= _AREA]
+            if _clip(near, poly).area <= _AREA]
 
 
 @dataclass(frozen=True)
@@ -372,7 +394,7 @@ def disconnected_entrances(
         ways = _passable(ways_by_room.get(rid, []), c)
         if not ways:
             continue
-        bare = floor.intersection(poly)
+        bare = _clip(floor, poly)
         groups, blocked = _groups(bare, ways, reach)
         furniture = False
         if placed is not None and not blocked and len(groups) <= 1:
@@ -438,13 +460,13 @@ def blocked_entrances(
             ways = [e for k, e in enumerate(ways) if k in touched]
             if not ways:
                 continue
-        # each doorstep lies in the room: cut the floor-wide spaces to it once, not per door
-        bare_here = bare.intersection(poly)
-        full_here = full.intersection(poly) if full is not None else None
-        for e in ways:
-            step = LineString([e.a, e.b]).buffer(c + _DOORSTEP).intersection(poly)
-            if bare_here.intersection(step).area <= _AREA:
-                continue
-            if full_here is None or full_here.intersection(step).area <= _AREA:
-                out.append((rid, e.id))
+        # each doorstep lies in the room: cut the floor-wide spaces to it once, not per door, and
+        # measure the room's doorsteps in one call each
+        steps = shapely.intersection(shapely.buffer(shapely.linestrings([[e.a, e.b] for e in ways]), c + _DOORSTEP), poly)
+        seen = shapely.area(shapely.intersection(_clip(bare, poly), steps)) > _AREA
+        kept = np.zeros(len(ways), dtype=bool)
+        k = np.flatnonzero(seen)
+        if full is not None and len(k):
+            kept[k] = shapely.area(shapely.intersection(_clip(full, poly), steps[k])) > _AREA
+        out += [(rid, e.id) for e, s, f in zip(ways, seen.tolist(), kept.tolist(), strict=True) if s and not f]
     return out
