@@ -485,6 +485,30 @@ def test_a_buildings_floor_files_get_the_problems_of_their_dicts(tmp_path: Path)
         assert got and got == want, name
 
 
+def test_a_building_validated_from_the_houses_it_wrote_gets_the_problems_of_its_files(tmp_path: Path) -> None:
+    """The dataset job checks the houses it has just written rather than reading them back: they
+    read back equal, and the problems (the sources naming the files) are those of the files."""
+    from mansion.scene import validate_building
+    from mansion.scene.write import save_scenes
+    from mansion.scene.house import Vec3
+
+    scenes = build_scenes(golden_building(), objects=True)
+    houses = scenes.houses
+    # problems to find: an object moved out of its room, a wall moved off its room's outline
+    obj = houses[0].objects[0]
+    obj.position = Vec3(x=obj.position.x + 40.0, y=obj.position.y, z=obj.position.z)
+    wall = houses[-1].walls[3]
+    wall.polygon[0] = Vec3(x=wall.polygon[0].x + 0.3, y=wall.polygon[0].y, z=wall.polygon[0].z)
+    manifest = save_scenes(scenes, tmp_path)
+    for house, floor in zip(houses, scenes.manifest.floors, strict=True):
+        assert House.model_validate_json((tmp_path / floor.house).read_text()) == house
+    read = validate_building(manifest)
+    assert named(read, "object-in-room", obj.id) and any(p.rule == "wall-room" or wall.id in p.element for p in read)
+    assert validate_building(manifest, written=houses) == read
+    with pytest.raises(InvalidInputError, match="houses given"):
+        validate_building(manifest, written=houses[:1])
+
+
 def test_bad_house_file_is_a_clear_error(tmp_path: Path) -> None:
     bad = tmp_path / "house.json"
     bad.write_text("{not json")

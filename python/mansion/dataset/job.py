@@ -153,7 +153,7 @@ def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock
     clock.lap("writing")
     warnings = 0
     if settings.validate:
-        problems = validate_building(manifest)
+        problems = validate_building(manifest, written=scenes.houses)
         bad = errors(problems)
         if bad:
             shown = "; ".join(str(p) for p in bad[:3])
