@@ -237,3 +237,35 @@ def test_footprint_is_the_box_turned_by_the_yaw() -> None:
         assert got.equals_exact(want, 1e-12)
     # a quarter turn stays exactly axis-aligned
     assert footprint((0.0, 0.0), 2.0, 1.0, 90.0).bounds == (-0.5, -1.0, 0.5, 1.0)
+
+
+def test_grid_inside_test_is_shapelys_on_rectilinear_rooms_and_others() -> None:
+    """The free-space grid's point-in-room test answers as shapely.contains_xy: on unions of
+    random boxes (L, U, T and stepped rooms, either orientation), with grid points on their
+    edges and vertices (not contained), and on rooms with a slanted edge or a hole."""
+    import shapely
+    from shapely.geometry import box
+
+    from mansion.placement.check import _inside
+
+    rng = np.random.default_rng(7)
+    rooms = []
+    for _ in range(60):
+        boxes = []
+        for _ in range(rng.integers(1, 4)):
+            x = np.sort(rng.choice(np.arange(0, 13) * 0.5, 2, replace=False))
+            y = np.sort(rng.choice(np.arange(0, 13) * 0.5, 2, replace=False))
+            boxes.append(box(x[0], y[0], x[1], y[1]))
+        shape = shapely.union_all(boxes)
+        if shape.geom_type == "Polygon":
+            rooms += [shape, Polygon(list(shape.exterior.coords)[::-1])]
+    rooms += [Polygon([(0, 0), (4, 0), (4, 3), (1, 5)]), box(0, 0, 6, 6).difference(box(2, 2, 3, 3))]
+    assert len(rooms) > 60
+    for room in rooms:
+        x0, y0, x1, y1 = room.bounds
+        for step, offset in ((0.25, 0.0), (0.05, 0.025)):  # through the edges; between them
+            gx, gy = np.meshgrid(np.arange(x0 - 0.5, x1 + 0.5, step) + offset,
+                                 np.arange(y0 - 0.5, y1 + 0.5, step) + offset)
+            want = shapely.contains_xy(room, gx, gy)
+            assert (_inside(room, gx, gy) == want).all(), room.wkt
+    assert not _inside(box(0, 0, 2, 2), np.array([[0.0, 1.0, 2.0]]), np.array([[1.0, 1.0, 1.0]]))[0, [0, 2]].any()

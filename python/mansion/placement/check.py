@@ -71,6 +71,8 @@ def _segments(shape: shapely.Geometry) -> NDArray[np.float64]:
 
 
 Rect = tuple[float, float, float, float, float, float]
+#: shapely's type id of a Polygon.
+_POLYGON = 3
 
 
 def _rectangle(shape: shapely.Geometry) -> Rect | None:
@@ -81,7 +83,12 @@ def _rectangle(shape: shapely.Geometry) -> Rect | None:
     xy = shapely.get_coordinates(shape)
     if len(xy) != 5:  # four corners and the closing point, no holes
         return None
-    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = xy[:4].tolist()
+    return _corners_rectangle(xy[:4].tolist())
+
+
+def _corners_rectangle(corners: list[list[float]]) -> Rect | None:
+    """:func:`_rectangle` of a polygon's four corners, in ring order."""
+    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = corners
     ux, uy, vx, vy = x1 - x0, y1 - y0, x3 - x0, y3 - y0
     lu, lv = math.hypot(ux, uy), math.hypot(vx, vy)
     if (lu <= 0 or lv <= 0 or abs(ux * vx + uy * vy) > 1e-9 * lu * lv
@@ -148,29 +155,53 @@ def _solid_segments(ring: Sequence[Pt], gaps: Sequence[tuple[Pt, Pt]]) -> NDArra
 
 
 def _inside(poly: Polygon, gx: NDArray[np.float64], gy: NDArray[np.float64]) -> Mask:
-    """``shapely.contains_xy(poly, gx, gy)``; for an axis-aligned rectangle (most rooms) by
-    comparing with its bounds, strictly (a point on the outline is not contained), 20 times
-    faster."""
+    """``shapely.contains_xy(poly, gx, gy)`` on the grid ``gx, gy`` (a meshgrid). A polygon
+    without holes whose edges are all axis-aligned (every room of ours, and of ProcTHOR's) is
+    tested row by row instead: a point is inside when an odd number of the vertical edges that
+    span its row lie to its right (the half-open rule counts a vertex once), and never on an
+    edge (as a point on the outline is not contained). With axis-aligned edges every crossing
+    is an edge's own x, so the answer is exact; 25 times faster on rooms that are no
+    rectangle."""
     xy = shapely.get_coordinates(poly)
-    if len(xy) == 5 and not poly.interiors:
-        xs, ys = set(xy[:4, 0].tolist()), set(xy[:4, 1].tolist())
-        if len(xs) == 2 and len(ys) == 2 and all(
-                (a[0] == b[0]) != (a[1] == b[1]) for a, b in zip(xy[:4], xy[1:5], strict=True)):
-            x0, y0, x1, y1 = poly.bounds
-            return (gx > x0) & (gx < x1) & (gy > y0) & (gy < y1)
-    return np.asarray(shapely.contains_xy(poly, gx, gy))
+    if poly.interiors or len(xy) < 4:
+        return np.asarray(shapely.contains_xy(poly, gx, gy))
+    a, b = xy[:-1], xy[1:]
+    vertical, horizontal = a[:, 0] == b[:, 0], a[:, 1] == b[:, 1]
+    if not (vertical | horizontal).all():
+        return np.asarray(shapely.contains_xy(poly, gx, gy))
+    xs, ys = gx[0], gy[:, 0]
+    inside = np.zeros(gx.shape, dtype=bool)
+    edge = np.zeros(gx.shape, dtype=bool)
+    for (ax, ay), (bx, by), upright in zip(a.tolist(), b.tolist(), vertical.tolist(), strict=True):
+        lo, hi = (ay, by) if ay < by else (by, ay)
+        if upright:
+            if lo == hi:
+                continue  # a repeated point
+            rows = np.flatnonzero((ys >= lo) & (ys < hi))  # (ay > y) != (by > y)
+            inside[rows] ^= xs < ax
+            edge[np.flatnonzero((ys >= lo) & (ys <= hi)), :] |= xs == ax
+        else:
+            left, right = (ax, bx) if ax < bx else (bx, ax)
+            edge[ys == ay, :] |= (xs >= left) & (xs <= right)
+    return inside & ~edge
 
 
 def _near_segments(gx: NDArray[np.float64], gy: NDArray[np.float64], segments: NDArray[np.float64],
                    radius: float) -> Mask:
     """Which grid points lie closer than ``radius`` to one of the segments (rows ax, ay, bx, by)."""
     near = np.zeros(gx.shape, dtype=bool)
+    if not len(segments):
+        return near
     xs, ys = gx[0], gy[:, 0]
     r = radius - 1e-12
-    for seg in segments:
-        win = _window(xs, ys, (min(seg[0], seg[2]), min(seg[1], seg[3]), max(seg[0], seg[2]),
-                               max(seg[1], seg[3])), r)
-        if win is not None:
+    # every segment's window of the grid (as :func:`_window`) in four calls
+    lo = np.minimum(segments[:, :2], segments[:, 2:])
+    hi = np.maximum(segments[:, :2], segments[:, 2:])
+    i0, i1 = np.searchsorted(ys, lo[:, 1] - r).tolist(), np.searchsorted(ys, hi[:, 1] + r, "right").tolist()
+    j0, j1 = np.searchsorted(xs, lo[:, 0] - r).tolist(), np.searchsorted(xs, hi[:, 0] + r, "right").tolist()
+    for k, seg in enumerate(segments):
+        if i0[k] < i1[k] and j0[k] < j1[k]:
+            win = (slice(i0[k], i1[k]), slice(j0[k], j1[k]))
             near[win] |= _segment_distance2(seg, gx[win], gy[win])[0] < r * r
     return near
 
@@ -186,18 +217,27 @@ def _blocked(gx: NDArray[np.float64], gy: NDArray[np.float64], shapes: Sequence[
     xs, ys = gx[0], gy[:, 0]
     r = radius - 1e-12
     r2 = r * r
-    for shape in shapes:
-        if shape.is_empty:
+    # every shape's kind, points and box read in one call each (a room holds dozens)
+    shapes = np.asarray(shapes, dtype=object)
+    kinds = shapely.get_type_id(shapes).tolist()
+    counts = shapely.get_num_coordinates(shapes).tolist()
+    coords = shapely.get_coordinates(shapes).tolist()
+    boxes = shapely.bounds(shapes).tolist()
+    first = 0
+    for shape, kind, count, bounds in zip(shapes, kinds, counts, boxes, strict=True):
+        at, first = first, first + count
+        if count == 0:  # empty
             continue
-        rect = _rectangle(shape)
+        # a polygon of four corners and the closing point has no holes
+        rect = _corners_rectangle(coords[at:at + 4]) if kind == _POLYGON and count == 5 else None
         if rect is not None:
-            win = _window(xs, ys, shape.bounds, r)
+            win = _window(xs, ys, bounds, r)
             if win is not None:
                 near[win] |= _distance2(rect, gx[win], gy[win]) < r2
             continue
         near |= _near_segments(gx, gy, _segments(shape), radius)
         if shape.geom_type.endswith("Polygon"):
-            win = _window(xs, ys, shape.bounds, 0.0)
+            win = _window(xs, ys, bounds, 0.0)
             if win is not None:
                 near[win] |= shapely.contains_xy(shape, gx[win], gy[win])
     return near
