@@ -304,23 +304,50 @@ class FreeSpace:
     ) -> bool:
         """Whether a reached cell lies within ``reach`` of the footprint; with ``front`` (the
         object's centre, yaw and depth) only cells on its front side count."""
+        return self.reaches_each(reached, [fp], reach, [front])[0]
+
+    def reaches_each(
+        self, reached: Mask, fps: Sequence[Polygon], reach: float,
+        fronts: Sequence[tuple[Pt, float, float] | None] | None = None,
+    ) -> list[bool]:
+        """:meth:`reaches` of each footprint (with its front, when ``fronts`` are given): the
+        footprints' kinds, points and boxes read, and their windows of the grid found, in one
+        call each (a room holds dozens of objects)."""
         h, w = self.shape
-        win = _window(self.px[:w], self.py[::w], fp.bounds, reach)
-        if win is None:
-            return False
-        x, y = self.px.reshape(h, w)[win], self.py.reshape(h, w)[win]
-        near = reached.reshape(h, w)[win].copy()
-        k = np.nonzero(near)
-        rect = _rectangle(fp)
-        if rect is not None:
-            near[k] = _distance2(rect, x[k], y[k]) < reach * reach
-        else:
-            near[k] = shapely.distance(shapely.points(x[k], y[k]), fp) < reach
-        if front is not None and near.any():
-            (cx, cy), yaw, depth = front
-            fx, fy = math.sin(math.radians(yaw)), math.cos(math.radians(yaw))
-            near &= (x - cx) * fx + (y - cy) * fy >= depth / 2 - 1e-9
-        return bool(near.any())
+        xs, ys = self.px[:w], self.py[::w]
+        gx, gy, grid = self.px.reshape(h, w), self.py.reshape(h, w), reached.reshape(h, w)
+        shapes = np.asarray(fps, dtype=object)
+        kinds = shapely.get_type_id(shapes).tolist()
+        counts = shapely.get_num_coordinates(shapes).tolist()
+        coords = shapely.get_coordinates(shapes).tolist()
+        boxes = shapely.bounds(shapes).reshape(-1, 4)
+        # the rows and columns whose centres lie within ``reach`` of each box (as _window)
+        i0 = np.searchsorted(ys, boxes[:, 1] - reach).tolist()
+        i1 = np.searchsorted(ys, boxes[:, 3] + reach, "right").tolist()
+        j0 = np.searchsorted(xs, boxes[:, 0] - reach).tolist()
+        j1 = np.searchsorted(xs, boxes[:, 2] + reach, "right").tolist()
+        out: list[bool] = []
+        first = 0
+        for n, fp in enumerate(fps):
+            at, first = first, first + counts[n]
+            if counts[n] == 0 or i0[n] >= i1[n] or j0[n] >= j1[n]:
+                out.append(False)
+                continue
+            win = (slice(i0[n], i1[n]), slice(j0[n], j1[n]))
+            k = np.nonzero(grid[win])
+            x, y = gx[win][k], gy[win][k]
+            rect = _corners_rectangle(coords[at:at + 4]) if kinds[n] == _POLYGON and counts[n] == 5 else None
+            if rect is not None:
+                near = _distance2(rect, x, y) < reach * reach
+            else:
+                near = shapely.distance(shapely.points(x, y), fp) < reach
+            front = fronts[n] if fronts is not None else None
+            if front is not None and near.any():
+                (cx, cy), yaw, depth = front
+                fx, fy = math.sin(math.radians(yaw)), math.cos(math.radians(yaw))
+                near &= (x - cx) * fx + (y - cy) * fy >= depth / 2 - 1e-9
+            out.append(bool(near.any()))
+        return out
 
 
 def _spread_runs(reached: Mask, free: Mask) -> Mask:

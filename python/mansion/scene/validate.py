@@ -593,10 +593,11 @@ class _HouseCheck:
                 if other is not e and (part & more).any() and not (mine & more).any():
                     self.add("object-reach", other.id, f"objects in room {room!r} cut it off from {e.id!r}")
         first = usable[0][0]
-        for x in items:
-            front = ((x.obj.position.x, x.obj.position.z), x.obj.rotation.y, x.depth) \
-                if x.type in FRONT_TYPES else None
-            if not space.reaches(reached, x.fp, REACH, front):
+        fronts = [((x.obj.position.x, x.obj.position.z), x.obj.rotation.y, x.depth)
+                  if x.type in FRONT_TYPES else None for x in items]
+        found = space.reaches_each(reached, [x.fp for x in items], REACH, fronts)
+        for x, front, ok in zip(items, fronts, found, strict=True):
+            if not ok:
                 where = " from its front" if front else ""
                 self.add("object-reach", x.obj.id, f"no free cell connected to a door ({first.id!r}, …) lies within "
                          f"{REACH} m of it{where} (agent radius {radius} m)")
