@@ -4,6 +4,7 @@ validation rule against a hand-broken house, and the CLI commands."""
 from __future__ import annotations
 
 import copy
+import itertools
 import json
 import math
 import sys
@@ -681,6 +682,26 @@ def test_child_off_its_receptacle(golden_house: dict[str, Any]) -> None:
     child = parent["children"][0]
     child["position"]["x"] += 3.0
     assert named(validate_house(h), "object-child", child["id"])
+    # at the receptacle's edge: a child sticking out by less than the tolerance (1 cm) is on it,
+    # one sticking out by 3 cm is not, whichever way the receptacle is turned
+    from mansion.scene.validate import OBJECT_TOLERANCE
+
+    db = asset_ids()
+    for yaw, axis in itertools.product((0.0, 90.0, 30.0), "xz"):
+        for out, bad in ((0.5 * OBJECT_TOLERANCE, False), (3 * OBJECT_TOLERANCE, True)):
+            h = copy.deepcopy(golden_house)
+            parent = next(o for o in h["objects"] if o.get("children"))
+            child = parent["children"][0]
+            del parent["children"][1:]
+            parent["rotation"]["y"] = child["rotation"]["y"] = yaw
+            pb, cb = db[parent["assetId"]]["boundingBox"], db[child["assetId"]]["boundingBox"]
+            # outwards along the receptacle's width (x) or depth (z), turned as footprints are
+            shift = (pb[axis] - cb[axis]) / 2 + out
+            a = math.radians(-yaw)
+            ux, uz = (math.cos(a), math.sin(a)) if axis == "x" else (-math.sin(a), math.cos(a))
+            child["position"]["x"] = parent["position"]["x"] + ux * shift
+            child["position"]["z"] = parent["position"]["z"] + uz * shift
+            assert named(validate_house(h), "object-child", child["id"]) == bad, (yaw, axis, out)
 
 
 def test_object_blocking_a_doorway_makes_the_room_unreachable(golden_house: dict[str, Any]) -> None:

@@ -18,7 +18,7 @@ import shapely
 from numpy.typing import NDArray
 from shapely.geometry import LineString, MultiLineString, Polygon
 
-__all__ = ["PASSAGE_MARGIN", "FreeSpace", "footprint", "passable", "solid_walls"]
+__all__ = ["PASSAGE_MARGIN", "FreeSpace", "corners_within", "footprint", "passable", "rectangle", "solid_walls"]
 
 #: An agent passes a doorway or opening only if it is this much wider than the agent (m).
 PASSAGE_MARGIN = 0.1
@@ -75,7 +75,7 @@ Rect = tuple[float, float, float, float, float, float]
 _POLYGON = 3
 
 
-def _rectangle(shape: shapely.Geometry) -> Rect | None:
+def rectangle(shape: shapely.Geometry) -> Rect | None:
     """(centre x, y, unit axis x, y, half length, half width) of a rectangle (a footprint), or
     None for any other shape."""
     if shape.geom_type != "Polygon":
@@ -86,8 +86,17 @@ def _rectangle(shape: shapely.Geometry) -> Rect | None:
     return _corners_rectangle(xy[:4].tolist())
 
 
+def corners_within(rect: Rect, shape: shapely.Geometry, margin: float) -> bool:
+    """Whether every point of ``shape`` lies in the rectangle grown by ``margin`` on each side
+    (then so does a convex shape, a footprint)."""
+    cx, cy, ux, uy, hu, hv = rect
+    xy = shapely.get_coordinates(shape)
+    dx, dy = xy[:, 0] - cx, xy[:, 1] - cy
+    return bool((np.abs(dx * ux + dy * uy) <= hu + margin).all() and (np.abs(dy * ux - dx * uy) <= hv + margin).all())
+
+
 def _corners_rectangle(corners: list[list[float]]) -> Rect | None:
-    """:func:`_rectangle` of a polygon's four corners, in ring order."""
+    """:func:`rectangle` of a polygon's four corners, in ring order."""
     (x0, y0), (x1, y1), (x2, y2), (x3, y3) = corners
     ux, uy, vx, vy = x1 - x0, y1 - y0, x3 - x0, y3 - y0
     lu, lv = math.hypot(ux, uy), math.hypot(vx, vy)

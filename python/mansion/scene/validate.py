@@ -521,14 +521,20 @@ class _HouseCheck:
             return
         top = parent.obj.position.y + parent.height / 2
         base = parent.obj.position.y - parent.height / 2
-        area = parent.fp.buffer(OBJECT_TOLERANCE, join_style="mitre")
-        shapely.prepare(area)
+        rect = check.rectangle(parent.fp)
+        area = None
         for child in parent.obj.children:
             c = self._placed(child, db)
             if c is None:
                 continue
-            if not area.contains(c.fp) and c.fp.difference(area).area > 1e-6:
-                self.add("object-child", child.id, f"footprint leaves its receptacle {parent.obj.id!r}")
+            # A child whose corners all lie in the receptacle's rectangle grown by the tolerance
+            # is inside its grown footprint (the answer below): measured only for the others.
+            if rect is None or not check.corners_within(rect, c.fp, OBJECT_TOLERANCE):
+                if area is None:
+                    area = parent.fp.buffer(OBJECT_TOLERANCE, join_style="mitre")
+                    shapely.prepare(area)
+                if not area.contains(c.fp) and c.fp.difference(area).area > 1e-6:
+                    self.add("object-child", child.id, f"footprint leaves its receptacle {parent.obj.id!r}")
             bottom = child.position.y - c.height / 2
             # on its receptacle's top (ProcTHOR's settle up to a few cm above it), or inside it
             # (a shelf's or a fridge's own shelves)
