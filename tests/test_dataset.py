@@ -7,6 +7,7 @@ import json
 import os
 from collections import Counter
 from pathlib import Path
+from typing import Any
 
 import pytest
 from typer.testing import CliRunner
@@ -254,3 +255,29 @@ def test_a_worker_killed_mid_building_fails_only_its_buildings(two_workers: Path
     again = make_dataset(out, N, SMALL, workers=2)
     assert again["failures"] == 0
     assert _files(out) == _files(two_workers)
+
+
+def test_a_job_pauses_the_cyclic_collector_and_restores_it(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The collector is off while a building is made (also when it fails) and back as it was."""
+    import gc
+
+    from mansion.dataset import job
+
+    seen: list[bool] = []
+
+    def build(*args: Any) -> dict[str, Any]:
+        seen.append(gc.isenabled())
+        raise RuntimeError("no building")
+
+    monkeypatch.setattr(job, "_build", build)
+    spec = dataset_specs(DatasetSettings(), 1)[0]
+    (tmp_path / "failures").mkdir()
+    for before in (True, False):
+        (gc.enable if before else gc.disable)()
+        try:
+            record = job.run_job(spec, job.JobSettings(), tmp_path)
+            assert record["failed"] and record["error"] == "RuntimeError"
+            assert gc.isenabled() is before
+        finally:
+            gc.enable()
+    assert seen == [False, False]
