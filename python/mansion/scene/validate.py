@@ -279,12 +279,21 @@ class _HouseCheck:
     def walls(self) -> dict[str, _Seg]:
         segs: dict[str, _Seg] = {}
         self.faces: dict[str, bool] = {}  # wall id → faces its room (False: exterior twin)
-        for wall in self.house.walls:
-            seg = _wall_segment(wall)
+        walls = self.house.walls
+        found = [_wall_segment(wall) for wall in walls]
+        # whether each wall's room holds the point just to its right, in one call for the floor
+        asked = [k for k, (wall, seg) in enumerate(zip(walls, found, strict=True))
+                 if seg is not None and wall.room_id != "exterior" and wall.room_id in self.polys]
+        rights = {k: found[k].side_point(True) for k in asked}  # type: ignore[union-attr]
+        held = dict(zip(asked, shapely.contains_xy(
+            [self.polys[walls[k].room_id] for k in asked],
+            [rights[k][0] for k in asked], [rights[k][1] for k in asked]).tolist(), strict=True)) if asked else {}
+        for k, (wall, seg) in enumerate(zip(walls, found, strict=True)):
             if seg is None:
                 self.add("wall-geometry", wall.id, "wall has no length or no height")
                 continue
-            if any(abs(p.y - min(q.y for q in wall.polygon)) > EPS and abs(p.y - min(q.y for q in wall.polygon) - seg.height) > EPS for p in wall.polygon):
+            low = min(q.y for q in wall.polygon)
+            if any(abs(p.y - low) > EPS and abs(p.y - low - seg.height) > EPS for p in wall.polygon):
                 self.add("wall-geometry", wall.id, "wall polygon is not a rectangle")
             segs[wall.id] = seg
             poly = self.polys.get(wall.room_id)
@@ -295,8 +304,8 @@ class _HouseCheck:
                 if wall.room_id not in {r.id for r in self.house.rooms}:
                     self.add("wall-room", wall.id, f"names room {wall.room_id!r}, which does not exist")
                 continue
-            right = seg.side_point(True)
-            if shapely.contains_xy(poly, *right):
+            right = rights[k]
+            if held[k]:
                 self.faces[wall.id] = True
             elif shapely.contains_xy(poly, *seg.side_point(False)) and not len(
                 self.room_tree.query(Point(right), predicate="within")
