@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
@@ -261,6 +261,10 @@ class FreeSpace:
     shape: tuple[int, int]
     open: Mask  # inside the room and clear of the solid walls
     free: Mask  # open and clear of every object
+    #: the runs of ``free`` (False) and ``open`` (True) along rows and columns, numbered by the
+    #: first flood of each (the masks are read, never changed)
+    _numbered: dict[bool, tuple[tuple[NDArray[np.int64], int], tuple[NDArray[np.int64], int]]] = field(
+        default_factory=dict, repr=False, compare=False)
 
     @classmethod
     def build(
@@ -298,14 +302,19 @@ class FreeSpace:
         # Alternate sweeps along rows and columns: each marks every run of free cells that holds
         # a reached cell, so a path needs one sweep per turn, not one step per cell. A sweep
         # that adds nothing ends it: the other direction's sweep, just done, is closed already.
-        reached = _spread_runs(reached, free)
-        count, rows = int(np.count_nonzero(reached)), False
+        # The runs depend on the mask alone: numbered once per mask, for every flood of it.
+        if empty not in self._numbered:
+            (rows, n_rows), (columns, n_columns) = _runs(free), _runs(free.T)
+            self._numbered[empty] = ((rows, n_rows), (columns.T, n_columns))
+        (rows, n_rows), (columns, n_columns) = self._numbered[empty]
+        reached = _spread(reached, rows, n_rows)
+        count, along_rows = int(np.count_nonzero(reached)), False
         while True:
-            reached = _spread_runs(reached, free) if rows else _spread_runs(reached.T, free.T).T
+            reached = _spread(reached, rows, n_rows) if along_rows else _spread(reached, columns, n_columns)
             now = int(np.count_nonzero(reached))
             if now == count:
-                return np.ascontiguousarray(reached).ravel()
-            count, rows = now, not rows
+                return reached.ravel()
+            count, along_rows = now, not along_rows
 
     def reaches(
         self, reached: Mask, fp: Polygon, reach: float,
@@ -359,18 +368,22 @@ class FreeSpace:
         return out
 
 
-def _spread_runs(reached: Mask, free: Mask) -> Mask:
-    """Every run of free cells along a row (axis 1) that holds a reached cell, all reached."""
+def _runs(free: Mask) -> tuple[NDArray[np.int64], int]:
+    """Each free cell's run along its row (axis 1), numbered from 1 (0: not free), and the
+    number of runs."""
     h, w = free.shape
     # a blocked column after each row keeps runs from joining across rows
     f = np.zeros((h, w + 1), dtype=bool)
     f[:, :w] = free
-    r = np.zeros((h, w + 1), dtype=bool)
-    r[:, :w] = reached
-    flat, hits = f.ravel(), r.ravel()
+    flat = f.ravel()
     starts = flat & ~np.concatenate(([False], flat[:-1]))
     run = np.cumsum(starts) * flat
-    hit = np.zeros(int(run.max(initial=0)) + 1, dtype=bool)
-    hit[run[hits & flat]] = True
+    return run.reshape(h, w + 1)[:, :w], int(run.max(initial=0))
+
+
+def _spread(reached: Mask, runs: NDArray[np.int64], count: int) -> Mask:
+    """Every run (numbered as by :func:`_runs`) that holds a reached cell, all reached."""
+    hit = np.zeros(count + 1, dtype=bool)
+    hit[runs[reached]] = True
     hit[0] = False
-    return np.asarray(hit[run].reshape(h, w + 1)[:, :w])
+    return np.asarray(hit[runs])
