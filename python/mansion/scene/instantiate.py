@@ -196,9 +196,15 @@ def room_layers(rooms: dict[str, Polygon]) -> dict[str, int]:
     layers, does not shine through into its neighbours."""
     ids = list(rooms)
     near: dict[str, set[str]] = {r: set() for r in ids}
+    edges = {r: rooms[r].boundary for r in ids}
+    bounds = {r: rooms[r].bounds for r in ids}
     for i, a in enumerate(ids):
+        ax0, ay0, ax1, ay1 = bounds[a]
         for b in ids[i + 1:]:
-            if rooms[a].boundary.intersection(rooms[b].boundary).length > 1e-6:
+            bx0, by0, bx1, by1 = bounds[b]
+            if bx0 > ax1 or ax0 > bx1 or by0 > ay1 or ay0 > by1:
+                continue  # apart: no shared wall (most pairs of a floor)
+            if edges[a].intersection(edges[b]).length > 1e-6:
                 near[a].add(b)
                 near[b].add(a)
     layer: dict[str, int] = {}
@@ -240,7 +246,8 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
     cards = {c.id: c for c in floor.room_cards}
     parts = [p for r in layout.rooms for p in split_room(r.id, r.polygon, r.holes)]
     owner = {p.id: p.room for p in parts}
-    polygons = {p.id: Polygon(oriented(p.ring, clockwise=True)) for p in parts}
+    rings = {p.id: oriented(p.ring, clockwise=True) for p in parts}
+    polygons = {p.id: Polygon(rings[p.id]) for p in parts}
     interfaces = find_interfaces([RoomRings(p.id, p.ring) for p in parts])
     plan = plan_passages(floor, interfaces, owner, polygons, seed=building.seed, ceiling=height)
 
@@ -310,7 +317,7 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
             Room(
                 id=p.id, room_type=_camel(r.room_type) or "Room",
                 floor_material=MaterialProperties(name=floors_mat[p.id]),
-                floor_polygon=[_v(q) for q in oriented(p.ring, clockwise=True)],
+                floor_polygon=[_v(q) for q in rings[p.id]],
                 metadata=meta,
             )
         )
