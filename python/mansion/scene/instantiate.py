@@ -102,10 +102,10 @@ def _v(p: Pt, y: float = 0.0) -> Vec3:
     return Vec3(x=p[0], y=y, z=p[1])
 
 
-def _wall(wid: str, room: str, p0: Pt, p1: Pt, height: float, material: str, empty: bool) -> Wall:
+def _wall(wid: str, room: str, corners: list[Vec3], material: str, empty: bool) -> Wall:
     return Wall(
         id=wid, room_id=room, empty=empty, material=MaterialProperties(name=material),
-        polygon=[_v(p0), _v(p1), _v(p1, height), _v(p0, height)],
+        polygon=corners,
     )
 
 
@@ -151,16 +151,18 @@ class _WallBuilder:
             cuts.append((t, f.length, None))
         for t0, t1, hole in cuts:
             p0, p1 = f.at(t0), f.at(t1)
+            # the two faces share their corners (never changed in place): p0 → p1, then up
+            a, b, b_top, a_top = _v(p0), _v(p1), _v(p1, self.height), _v(p0, self.height)
             right = self._id(f.room)
-            self.walls.append(_wall(right, f.room, p0, p1, self.height, self.materials[f.room], empty))
+            self.walls.append(_wall(right, f.room, [a, b, b_top, a_top], self.materials[f.room], empty))
             if f.other is not None:
                 left = self._id(f.other)
                 self.walls.append(
-                    _wall(left, f.other, p1, p0, self.height, self.materials[f.other], empty)
+                    _wall(left, f.other, [b, a, a_top, b_top], self.materials[f.other], empty)
                 )
             else:
                 left = self._id(f.room, exterior=True)
-                self.walls.append(_wall(left, f.room, p1, p0, self.height, self.facade, empty))
+                self.walls.append(_wall(left, f.room, [b, a, a_top, b_top], self.facade, empty))
             if hole is not None:
                 self._hole(hole, f, t0, right, left)
 
@@ -278,25 +280,29 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
         return landing_pose(polygons[f.room], f.at((front.x0 + front.x1) / 2), inward,
                             steps=(1.4, 1.2, 1.6, 1.0, 1.8, 0.8))
 
-    builder = build_walls()
     door_centres = [interfaces[g.interface].at((g.x0 + g.x1) / 2) for g in plan.features
                     if g.kind == "door"]
     if plan.entrance_options:
-        # the front door whose doorstep the agent walks on to most of the floor
-        space = open_space(polygons.values(), wall_pieces(builder.walls, builder.doors),
-                           AGENT_RADIUS + NAV_MARGIN)
+        front = plan.entrance_options[0]
+        if len(plan.entrance_options) > 1:
+            # the front door whose doorstep the agent walks on to most of the floor (the walls
+            # without it, built here for the open space only)
+            builder = build_walls()
+            space = open_space(polygons.values(), wall_pieces(builder.walls, builder.doors),
+                               AGENT_RADIUS + NAV_MARGIN)
 
-        def reach(k: int) -> tuple[int, int]:
-            p = inside(plan.entrance_options[k]).position
-            return (len(reached_rooms(space, polygons, (p.x, p.z))), -k)
+            def reach(k: int) -> tuple[int, int]:
+                p = inside(plan.entrance_options[k]).position
+                return (len(reached_rooms(space, polygons, (p.x, p.z))), -k)
 
-        front = plan.entrance_options[max(range(len(plan.entrance_options)), key=reach)]
+            front = plan.entrance_options[max(range(len(plan.entrance_options)), key=reach)]
         plan.features = [g for g in plan.features
                          if not (g.kind == "window" and g.interface == front.interface)] + [front]
         plan.entrance = front.id
         builder = build_walls()
         spawn = inside(front)
     else:
+        builder = build_walls()
         spawn = hub_spawn(layout, graph.hub.id, door_centres)
     at = Point(spawn.position.x, spawn.position.z)
     hub = next(
