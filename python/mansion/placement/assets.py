@@ -73,6 +73,8 @@ class AssetDatabase:
         self.kinematic: dict[str, bool] = ann["isKinematic"]
         self.pickupable: dict[str, bool] = ann["isPickupable"]
         self._small: dict[str, tuple[tuple[str, ...], tuple[float, ...]]] = {}
+        # the assets of a type that fit a top (long side, short side): every draw asks again
+        self._fits: dict[tuple[str, float, float], list[Asset]] = {}
 
     @property
     def types(self) -> list[str]:
@@ -118,10 +120,20 @@ class AssetDatabase:
             if len(out) == n:
                 break
             t = rng.choices(types, probs)[0]
-            fit = [a for a in self.assets[t] if max(a.width, a.depth) <= max(top) and min(a.width, a.depth) <= min(top)]
+            fit = self._fitting(t, max(top), min(top))
             if fit:
                 out.append(rng.choice(fit))
         return out
+
+    def _fitting(self, object_type: str, long: float, short: float) -> list[Asset]:
+        key = (object_type, long, short)
+        fit = self._fits.get(key)
+        if fit is None:
+            fit = self._fits[key] = [
+                a for a in self.assets[object_type]
+                if max(a.width, a.depth) <= long and min(a.width, a.depth) <= short
+            ]
+        return fit
 
 
 @cache

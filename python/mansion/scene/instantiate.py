@@ -11,8 +11,11 @@ agent spawn on a free cell of the hub. Then every room is furnished around those
 
 from __future__ import annotations
 
+import gc
 import math
 import re
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 from shapely.geometry import Point, Polygon
@@ -99,10 +102,10 @@ def _v(p: Pt, y: float = 0.0) -> Vec3:
     return Vec3(x=p[0], y=y, z=p[1])
 
 
-def _wall(wid: str, room: str, p0: Pt, p1: Pt, height: float, material: str, empty: bool) -> Wall:
+def _wall(wid: str, room: str, corners: list[Vec3], material: str, empty: bool) -> Wall:
     return Wall(
         id=wid, room_id=room, empty=empty, material=MaterialProperties(name=material),
-        polygon=[_v(p0), _v(p1), _v(p1, height), _v(p0, height)],
+        polygon=corners,
     )
 
 
@@ -148,16 +151,18 @@ class _WallBuilder:
             cuts.append((t, f.length, None))
         for t0, t1, hole in cuts:
             p0, p1 = f.at(t0), f.at(t1)
+            # the two faces share their corners (never changed in place): p0 → p1, then up
+            a, b, b_top, a_top = _v(p0), _v(p1), _v(p1, self.height), _v(p0, self.height)
             right = self._id(f.room)
-            self.walls.append(_wall(right, f.room, p0, p1, self.height, self.materials[f.room], empty))
+            self.walls.append(_wall(right, f.room, [a, b, b_top, a_top], self.materials[f.room], empty))
             if f.other is not None:
                 left = self._id(f.other)
                 self.walls.append(
-                    _wall(left, f.other, p1, p0, self.height, self.materials[f.other], empty)
+                    _wall(left, f.other, [b, a, a_top, b_top], self.materials[f.other], empty)
                 )
             else:
                 left = self._id(f.room, exterior=True)
-                self.walls.append(_wall(left, f.room, p1, p0, self.height, self.facade, empty))
+                self.walls.append(_wall(left, f.room, [b, a, a_top, b_top], self.facade, empty))
             if hole is not None:
                 self._hole(hole, f, t0, right, left)
 
@@ -196,9 +201,15 @@ def room_layers(rooms: dict[str, Polygon]) -> dict[str, int]:
     layers, does not shine through into its neighbours."""
     ids = list(rooms)
     near: dict[str, set[str]] = {r: set() for r in ids}
+    edges = {r: rooms[r].boundary for r in ids}
+    bounds = {r: rooms[r].bounds for r in ids}
     for i, a in enumerate(ids):
+        ax0, ay0, ax1, ay1 = bounds[a]
         for b in ids[i + 1:]:
-            if rooms[a].boundary.intersection(rooms[b].boundary).length > 1e-6:
+            bx0, by0, bx1, by1 = bounds[b]
+            if bx0 > ax1 or ax0 > bx1 or by0 > ay1 or ay0 > by1:
+                continue  # apart: no shared wall (most pairs of a floor)
+            if edges[a].intersection(edges[b]).length > 1e-6:
                 near[a].add(b)
                 near[b].add(a)
     layer: dict[str, int] = {}
@@ -240,7 +251,8 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
     cards = {c.id: c for c in floor.room_cards}
     parts = [p for r in layout.rooms for p in split_room(r.id, r.polygon, r.holes)]
     owner = {p.id: p.room for p in parts}
-    polygons = {p.id: Polygon(oriented(p.ring, clockwise=True)) for p in parts}
+    rings = {p.id: oriented(p.ring, clockwise=True) for p in parts}
+    polygons = {p.id: Polygon(rings[p.id]) for p in parts}
     interfaces = find_interfaces([RoomRings(p.id, p.ring) for p in parts])
     plan = plan_passages(floor, interfaces, owner, polygons, seed=building.seed, ceiling=height)
 
@@ -268,25 +280,29 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
         return landing_pose(polygons[f.room], f.at((front.x0 + front.x1) / 2), inward,
                             steps=(1.4, 1.2, 1.6, 1.0, 1.8, 0.8))
 
-    builder = build_walls()
     door_centres = [interfaces[g.interface].at((g.x0 + g.x1) / 2) for g in plan.features
                     if g.kind == "door"]
     if plan.entrance_options:
-        # the front door whose doorstep the agent walks on to most of the floor
-        space = open_space(polygons.values(), wall_pieces(builder.walls, builder.doors),
-                           AGENT_RADIUS + NAV_MARGIN)
+        front = plan.entrance_options[0]
+        if len(plan.entrance_options) > 1:
+            # the front door whose doorstep the agent walks on to most of the floor (the walls
+            # without it, built here for the open space only)
+            builder = build_walls()
+            space = open_space(polygons.values(), wall_pieces(builder.walls, builder.doors),
+                               AGENT_RADIUS + NAV_MARGIN)
 
-        def reach(k: int) -> tuple[int, int]:
-            p = inside(plan.entrance_options[k]).position
-            return (len(reached_rooms(space, polygons, (p.x, p.z))), -k)
+            def reach(k: int) -> tuple[int, int]:
+                p = inside(plan.entrance_options[k]).position
+                return (len(reached_rooms(space, polygons, (p.x, p.z))), -k)
 
-        front = plan.entrance_options[max(range(len(plan.entrance_options)), key=reach)]
+            front = plan.entrance_options[max(range(len(plan.entrance_options)), key=reach)]
         plan.features = [g for g in plan.features
                          if not (g.kind == "window" and g.interface == front.interface)] + [front]
         plan.entrance = front.id
         builder = build_walls()
         spawn = inside(front)
     else:
+        builder = build_walls()
         spawn = hub_spawn(layout, graph.hub.id, door_centres)
     at = Point(spawn.position.x, spawn.position.z)
     hub = next(
@@ -310,7 +326,7 @@ def _floor_parts(building: Building, floor: Floor, height: float) -> _FloorParts
             Room(
                 id=p.id, room_type=_camel(r.room_type) or "Room",
                 floor_material=MaterialProperties(name=floors_mat[p.id]),
-                floor_polygon=[_v(q) for q in oriented(p.ring, clockwise=True)],
+                floor_polygon=[_v(q) for q in rings[p.id]],
                 metadata=meta,
             )
         )
@@ -408,13 +424,29 @@ def _furnish(
                 child.layer = obj.layer
 
 
+@contextmanager
+def _no_cycle_collection() -> Iterator[None]:
+    """Instantiation makes a few hundred thousand small objects (models, geometries) and no
+    reference cycles, so the cyclic collector finds nothing, yet its passes, triggered by the
+    allocations, walk the whole heap (the building, the databases): about 40 % of the stage's
+    Python time. Paused while a building is instantiated, resumed as it was."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def floor_house(
     building: Building, index: int, *, objects: bool = True, options: PlaceOptions | None = None
 ) -> House:
     """The house of floor ``index`` alone (furnished unless ``objects`` is False)."""
-    parts = _floor_parts(building, building.floors[index], ceiling_height(building))
-    if objects:
-        _furnish(building, [parts], options)
+    with _no_cycle_collection():
+        parts = _floor_parts(building, building.floors[index], ceiling_height(building))
+        if objects:
+            _furnish(building, [parts], options)
     return parts.house
 
 
@@ -424,9 +456,10 @@ def build_scenes(
     """Every floor's house JSON and the building manifest. With ``objects`` (the default) every
     room is furnished (:mod:`mansion.scene.furnish`); ``options`` tunes the placement engine."""
     height = ceiling_height(building)
-    parts = [_floor_parts(building, f, height) for f in building.floors]
-    if objects:
-        _furnish(building, parts, options)
+    with _no_cycle_collection():
+        parts = [_floor_parts(building, f, height) for f in building.floors]
+        if objects:
+            _furnish(building, parts, options)
     floors = [
         ManifestFloor(
             index=f.index, house=floor_file(f.index), elevation=f.index * (height + SLAB),

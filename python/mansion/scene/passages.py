@@ -163,12 +163,22 @@ class _Planner:
         for i, f in enumerate(interfaces):
             if f.other is not None and owner[f.room] == owner[f.other]:
                 self.plan.empty.add(i)
+        # the interfaces each pair of layout rooms shares, in order: asked for every passage
+        self.pairs: dict[frozenset[str], list[int]] = {}
+        for i, f in enumerate(interfaces):
+            if f.other is not None:
+                self.pairs.setdefault(frozenset((owner[f.room], owner[f.other])), []).append(i)
+        # each part grown by 1e-6 (the aprons' tolerance), once: every door candidate asks
+        self.grown: dict[str, Polygon] = {}
 
     def shared(self, a: str, b: str) -> list[int]:
-        return [
-            i for i, f in enumerate(self.interfaces)
-            if f.other is not None and {self.owner[f.room], self.owner[f.other]} == {a, b}
-        ]
+        return list(self.pairs.get(frozenset((a, b)), ()))
+
+    def _grown(self, room: str) -> Polygon:
+        grown = self.grown.get(room)
+        if grown is None:
+            grown = self.grown[room] = self.parts[room].buffer(1e-6)
+        return grown
 
     def _apron_centre(self, f: Interface, width: float, margin: float, outside: bool = False) -> float | None:
         """Where along ``f`` a door ``width`` wide goes: nearest the middle with an apron on both
@@ -185,7 +195,7 @@ class _Planner:
             for room, sign in sides:
                 d = sign * DOOR_APRON
                 apron = Polygon([a, b, (b[0] + nx * d, b[1] + ny * d), (a[0] + nx * d, a[1] + ny * d)])
-                if room is None or not self.parts[room].buffer(1e-6).covers(apron):
+                if room is None or not self._grown(room).covers(apron):
                     ok = False
                     break
             if ok:

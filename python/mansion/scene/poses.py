@@ -35,6 +35,16 @@ def pose(x: float, z: float, yaw: float) -> AgentPose:
     )
 
 
+def _within(xs: np.ndarray, ys: np.ndarray, d: tuple[float, float], r: float) -> np.ndarray:
+    """Which points lie nearer than ``r`` to ``d``, exactly as ``math.dist(p, d) < r`` says:
+    numpy decides the points clearly either side, math.dist the few within rounding of ``r``."""
+    d2 = (xs - d[0]) ** 2 + (ys - d[1]) ** 2
+    near = d2 < (r - 1e-9) ** 2
+    for i in np.flatnonzero(~near & (d2 <= (r + 1e-9) ** 2)):
+        near[i] = math.dist((xs[i], ys[i]), d) < r
+    return near
+
+
 def hub_spawn(layout: FloorLayout, hub: str, avoid: list[tuple[float, float]]) -> AgentPose:
     """The hub cell farthest from the hub's walls (ties: nearest the hub's centroid), away from
     door swings (``avoid``: door centres), facing the longest free run along an axis."""
@@ -56,14 +66,20 @@ def hub_spawn(layout: FloorLayout, hub: str, avoid: list[tuple[float, float]]) -
         cur = nxt
     s, (ox, oy) = grid.cell_size, grid.origin
     cx, cy = layout.room(hub).centroid
+    rows, cols = np.nonzero(mask)
+    xs, ys = ox + (cols + 0.5) * s, oy + (rows + 0.5) * s
+    free = np.ones(len(rows), dtype=bool)
+    for d in avoid:
+        free &= ~_within(xs, ys, d, 1.2)
     best: tuple[float, float, int, int] | None = None
-    for r, c in zip(*np.nonzero(mask), strict=True):
-        x, y = ox + (c + 0.5) * s, oy + (r + 0.5) * s
-        if any(math.dist((x, y), d) < 1.2 for d in avoid):
-            continue
-        key = (float(depth[r, c]), -math.dist((x, y), (cx, cy)), int(r), int(c))
-        if best is None or key > best:
-            best = key
+    if free.any():
+        # the deepest free cells, then math.dist's own distances break the tie
+        deep = depth[rows, cols]
+        top = deep[free].max()
+        best = max(
+            (float(top), -math.dist((xs[i], ys[i]), (cx, cy)), int(rows[i]), int(cols[i]))
+            for i in np.flatnonzero(free & (deep == top))
+        )
     if best is None:  # a hub that is all door swing: take its deepest cell anyway
         r, c = np.unravel_index(int(np.argmax(depth)), depth.shape)
     else:
