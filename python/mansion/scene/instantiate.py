@@ -11,15 +11,13 @@ agent spawn on a free cell of the hub. Then every room is furnished around those
 
 from __future__ import annotations
 
-import gc
 import math
 import re
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass
 
 from shapely.geometry import Point, Polygon
 
+from mansion._collector import collector_paused
 from mansion.exceptions import InvalidBuildingError, MansionError
 from mansion.models.building import Building, Floor
 from mansion.placement.place import PlaceOptions
@@ -424,26 +422,11 @@ def _furnish(
                 child.layer = obj.layer
 
 
-@contextmanager
-def _no_cycle_collection() -> Iterator[None]:
-    """Instantiation makes a few hundred thousand small objects (models, geometries) and no
-    reference cycles, so the cyclic collector finds nothing, yet its passes, triggered by the
-    allocations, walk the whole heap (the building, the databases): about 40 % of the stage's
-    Python time. Paused while a building is instantiated, resumed as it was."""
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
-
-
 def floor_house(
     building: Building, index: int, *, objects: bool = True, options: PlaceOptions | None = None
 ) -> House:
     """The house of floor ``index`` alone (furnished unless ``objects`` is False)."""
-    with _no_cycle_collection():
+    with collector_paused():
         parts = _floor_parts(building, building.floors[index], ceiling_height(building))
         if objects:
             _furnish(building, [parts], options)
@@ -456,7 +439,7 @@ def build_scenes(
     """Every floor's house JSON and the building manifest. With ``objects`` (the default) every
     room is furnished (:mod:`mansion.scene.furnish`); ``options`` tunes the placement engine."""
     height = ceiling_height(building)
-    with _no_cycle_collection():
+    with collector_paused():
         parts = [_floor_parts(building, f, height) for f in building.floors]
         if objects:
             _furnish(building, parts, options)
