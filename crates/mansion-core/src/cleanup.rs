@@ -26,14 +26,22 @@ pub struct Scratch {
     pub parent: Vec<u32>,
     /// Empty cells to fill.
     pub holes: Vec<usize>,
+    /// Cells a fill labelled, or a spur pass emptied, in the last step of the clean cycle.
+    pub changed: Vec<usize>,
     /// Side of the largest same-label square ending at each cell of the region's box (width rule).
     pub square: Vec<u16>,
     /// Per column of the region's box, rows to the nearest cell a rule-sized square reaches.
     pub column: Vec<u16>,
+    /// Width rule of each cell of the region's box (0: none, or outside the region).
+    pub rule: Vec<u16>,
     /// Cells narrower than their room's width rule.
     pub thin: Vec<usize>,
     /// Rooms that gave cells away in a width pass.
     pub donors: Vec<Label>,
+    /// Labels of the region's box when `thin` was last found (see [`update_thin`]).
+    pub before: Vec<Label>,
+    /// Cells whose thin test is repeated by [`update_thin`].
+    pub zone: Vec<usize>,
 }
 
 impl Scratch {
@@ -132,9 +140,16 @@ fn find_spurs(grid: &Grid, region: &Region, out: &mut Vec<usize>) {
 /// Empty every spur cell of the region, pass after pass, until none is left. Returns the number of
 /// cells emptied.
 pub fn remove_spurs(grid: &mut Grid, region: &Region, s: &mut Scratch) -> usize {
+    find_spurs(grid, region, &mut s.list);
+    remove_listed_spurs(grid, region, s)
+}
+
+/// [`remove_spurs`] from the spur cells listed in `s.list` (ascending, every spur of the region);
+/// the cells emptied are left in `s.changed`.
+fn remove_listed_spurs(grid: &mut Grid, region: &Region, s: &mut Scratch) -> usize {
     let w = grid.w;
     let mut removed = 0;
-    find_spurs(grid, region, &mut s.list);
+    s.changed.clear();
     while !s.list.is_empty() {
         // all spurs of one pass go at once; only their old neighbours can become spurs next
         s.next.clear();
@@ -145,6 +160,7 @@ pub fn remove_spurs(grid: &mut Grid, region: &Region, s: &mut Scratch) -> usize 
             }
             grid.cells[c] = EMPTY;
             removed += 1;
+            s.changed.push(c);
             for n in [c - 1, c + 1, c - w, c + w] {
                 if grid.cells[n] == l && region.inside[n] {
                     s.next.push(n);
@@ -167,11 +183,18 @@ pub fn remove_spurs(grid: &mut Grid, region: &Region, s: &mut Scratch) -> usize 
 /// longest boundary with it; fixed walls split components and do not count as shared boundary.
 /// Returns false when some component touches no region room (it stays empty).
 pub fn fill_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scratch) -> bool {
+    find_empty(grid, region, &mut s.holes);
+    fill_listed_holes(grid, region, walls, s)
+}
+
+/// [`fill_holes`] from the empty cells listed in `s.holes` (ascending, every empty cell of the
+/// region); the cells labelled are left in `s.changed`.
+fn fill_listed_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scratch) -> bool {
     let w = grid.w;
     let epoch = s.bump();
     let mut all_filled = true;
-    let mut holes = std::mem::take(&mut s.holes);
-    find_empty(grid, region, &mut holes);
+    let holes = std::mem::take(&mut s.holes);
+    s.changed.clear();
     for &start in &holes {
         // cells of a component already filled (or found unfillable) carry this epoch's stamp
         if s.stamp[start] == epoch {
@@ -207,6 +230,7 @@ pub fn fill_holes(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scrat
                 for &c in &s.list {
                     grid.cells[c] = l;
                 }
+                s.changed.extend_from_slice(&s.list);
             }
             None => all_filled = false,
         }
@@ -382,68 +406,89 @@ pub fn thin_cells_squares(grid: &Grid, region: &Region, widths: &[u16], s: &mut 
     let (x0, y0, x1, y1) = region.bbox;
     let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
     let gw = grid.w;
+    // the rule of each box cell's room, 0 where it has none or lies outside the region: read once,
+    // so the sweeps below look up neither `widths` nor `region`
+    s.rule.clear();
+    s.rule.resize(bw * bh, 0);
     s.square.clear();
     s.square.resize(bw * bh, 0);
     // square sides of the row below and of this row (the box's `square` gets distances instead)
     s.column.clear();
     s.column.resize(2 * bw, 0);
-    let sq = &mut s.square;
+    let (rules, sq) = (&mut s.rule, &mut s.square);
     let (below, this) = s.column.split_at_mut(bw);
-    let rule = |l: Label| widths.get(l as usize).copied().unwrap_or(0);
     let mut any = false;
     for y in 0..bh {
         let row = (y + y0) * gw + x0;
         let line = y * bw;
-        this.iter_mut().for_each(|v| *v = 0);
-        for x in 0..bw {
-            let c = row + x;
-            let l = grid.cells[c];
-            if rule(l) <= 1 || !region.inside[c] {
-                continue;
-            }
-            any = true;
-            this[x] = if x == 0 || y == 0 {
-                1
-            } else {
-                // cells of other rooms hold 0 or fail the label test
-                let at = |cell: usize, v: u16| if grid.cells[cell] == l { v } else { 0 };
-                1 + at(c - 1, this[x - 1])
-                    .min(at(c - gw, below[x]))
-                    .min(at(c - gw - 1, below[x - 1]))
-            };
+        // one cell past the box on the right: the padded grid always has it
+        let cells = &grid.cells[row..row + bw + 1];
+        let rule = &mut rules[line..line + bw];
+        let mut some = false;
+        for ((r, &l), &inside) in rule
+            .iter_mut()
+            .zip(cells)
+            .zip(&region.inside[row..row + bw])
+        {
+            let w = widths.get(l as usize).copied().unwrap_or(0);
+            *r = if w > 1 && inside { w } else { 0 };
+            some |= *r > 0;
         }
-        sq[line..line + bw].copy_from_slice(this);
-        below.copy_from_slice(this);
-        if !any {
+        if !some {
+            // no ruled cell in this row: every side is 0 and the row sweep changes nothing
+            this.iter_mut().for_each(|v| *v = 0);
+            below.copy_from_slice(this);
             continue;
         }
-        // right to left: distance to the nearest square corner of the same room along the row
+        any = true;
+        if y == 0 {
+            for (t, &r) in this.iter_mut().zip(rule.iter()) {
+                *t = u16::from(r > 0);
+            }
+        } else {
+            let down = &grid.cells[row - gw..row - gw + bw];
+            this[0] = u16::from(rule[0] > 0);
+            for x in 1..bw {
+                if rule[x] == 0 {
+                    this[x] = 0;
+                    continue;
+                }
+                // cells of other rooms hold 0 or fail the label test
+                let l = cells[x];
+                let at = |m: Label, v: u16| if m == l { v } else { 0 };
+                this[x] = 1 + at(cells[x - 1], this[x - 1])
+                    .min(at(down[x], below[x]))
+                    .min(at(down[x - 1], below[x - 1]));
+            }
+        }
+        let line_sq = &mut sq[line..line + bw];
+        line_sq.copy_from_slice(this);
+        below.copy_from_slice(this);
+        // right to left: distance to the nearest square corner of the same room along the row (a
+        // cell after a side of 0, or after another room, starts again from FAR)
         let mut d = FAR;
         for x in (0..bw).rev() {
-            let k = line + x;
-            let v = sq[k];
+            let v = line_sq[x];
             if v == 0 {
                 d = FAR;
                 continue;
             }
-            let l = grid.cells[row + x];
-            let w = rule(l);
-            let same = x + 1 < bw && grid.cells[row + x + 1] == l && sq[k + 1] > 0;
-            d = if v >= w {
+            d = if v >= rule[x] {
                 0
-            } else if same {
+            } else if cells[x + 1] == cells[x] {
                 d.saturating_add(1)
             } else {
                 FAR
             };
             // keep 1 + the distance so that 0 still means "no rule here"
-            sq[k] = d.saturating_add(1);
+            line_sq[x] = d.saturating_add(1);
         }
     }
     if !any {
         return;
     }
-    // top-down: distance to the nearest row whose run reaches this column, within the room
+    // top-down: distance to the nearest row whose run reaches this column, within the room (a
+    // cell under a side of 0, or under another room, starts again from FAR)
     s.column.clear();
     s.column.resize(bw, FAR);
     let col = &mut s.column;
@@ -451,18 +496,20 @@ pub fn thin_cells_squares(grid: &Grid, region: &Region, widths: &[u16], s: &mut 
     for y in (0..bh).rev() {
         let row = (y + y0) * gw + x0;
         let line = y * bw;
+        let cells = &grid.cells[row..row + bw];
+        // the row above the box (y + 1 = bh) is never read: `col` is FAR there
+        let up = &grid.cells[row + gw..row + gw + bw];
+        let (line_sq, rule) = (&sq[line..line + bw], &rules[line..line + bw]);
         for x in 0..bw {
-            let v = sq[line + x];
+            let v = line_sq[x];
             if v == 0 {
                 col[x] = FAR;
                 continue;
             }
-            let l = grid.cells[row + x];
-            let w = rule(l);
-            let same = y + 1 < bh && grid.cells[row + gw + x] == l && sq[line + bw + x] > 0;
+            let w = rule[x];
             col[x] = if v - 1 < w {
                 0
-            } else if same {
+            } else if up[x] == cells[x] {
                 col[x].saturating_add(1)
             } else {
                 FAR
@@ -490,8 +537,20 @@ pub fn hand_over_thin(
     limit: usize,
     s: &mut Scratch,
 ) -> usize {
-    s.donors.clear();
     thin_cells(grid, region, widths, s);
+    hand_over_listed(grid, region, walls, index, limit, s)
+}
+
+/// [`hand_over_thin`] for the thin cells already in `s.thin`.
+fn hand_over_listed(
+    grid: &mut Grid,
+    region: &Region,
+    walls: &Walls,
+    index: &[i16],
+    limit: usize,
+    s: &mut Scratch,
+) -> usize {
+    s.donors.clear();
     if s.thin.is_empty() || s.thin.len() >= limit {
         return 0;
     }
@@ -622,10 +681,16 @@ pub fn clean_widths(
     s: &mut Scratch,
 ) -> Option<bool> {
     let mut before = usize::MAX;
-    for _ in 0..MAX_WIDTH_PASSES {
+    for pass in 0..MAX_WIDTH_PASSES {
+        if pass == 0 {
+            thin_cells(grid, region, widths, s);
+        } else {
+            update_thin(grid, region, widths, s);
+        }
+        remember_box(grid, region, s);
         // stops with nothing thin, with only strips no round room can take, or with no fewer thin
         // cells than the pass before (strips bouncing between rooms); `s.thin` keeps them
-        if hand_over_thin(grid, region, walls, index, widths, before, s) == 0 {
+        if hand_over_listed(grid, region, walls, index, before, s) == 0 {
             return Some(s.thin.is_empty());
         }
         before = s.thin.len();
@@ -638,8 +703,99 @@ pub fn clean_widths(
             return None;
         }
     }
-    thin_cells(grid, region, widths, s);
+    update_thin(grid, region, widths, s);
     Some(s.thin.is_empty())
+}
+
+/// Copy the labels of the region's box into `s.before`, for [`update_thin`].
+fn remember_box(grid: &Grid, region: &Region, s: &mut Scratch) {
+    let (x0, y0, x1, y1) = region.bbox;
+    s.before.clear();
+    for y in y0..=y1 {
+        s.before
+            .extend_from_slice(&grid.cells[y * grid.w + x0..=y * grid.w + x1]);
+    }
+}
+
+/// [`thin_cells`] again after the grid changed since `s.thin` was found on the labels kept in
+/// `s.before`, repeating the test only near the cells that changed.
+///
+/// A cell is thin when no `w × w` square of its room's region cells holds it, and every such
+/// square lies within `w − 1` cells of it: a change can only alter the answer of cells within
+/// `r − 1` (`r` the largest rule) of a changed cell. Those are tested square by square, the rest
+/// keep their answer. When changes are many, the sweeps over the whole box are cheaper.
+pub fn update_thin(grid: &Grid, region: &Region, widths: &[u16], s: &mut Scratch) {
+    let reach = widths.iter().map(|&w| w as usize).max().unwrap_or(0).max(1) - 1;
+    let ball = (2 * reach + 1) * (2 * reach + 1);
+    update_thin_within(grid, region, widths, s.before.len() / (2 * ball), s);
+}
+
+/// [`update_thin`], falling back to the sweeps past `budget` changed cells.
+fn update_thin_within(
+    grid: &Grid,
+    region: &Region,
+    widths: &[u16],
+    budget: usize,
+    s: &mut Scratch,
+) {
+    let (x0, y0, x1, y1) = region.bbox;
+    let (bw, gw) = (x1 - x0 + 1, grid.w);
+    let rule = |l: Label| widths.get(l as usize).copied().unwrap_or(0) as usize;
+    let reach = widths.iter().map(|&w| w as usize).max().unwrap_or(0).max(1) - 1;
+    let epoch = s.bump();
+    s.zone.clear();
+    let mut changed = 0;
+    for y in y0..=y1 {
+        let row = y * gw + x0;
+        let old = &s.before[(y - y0) * bw..(y - y0 + 1) * bw];
+        let new = &grid.cells[row..row + bw];
+        if old == new {
+            continue;
+        }
+        for x in (0..bw).filter(|&x| old[x] != new[x]) {
+            changed += 1;
+            if changed > budget {
+                thin_cells(grid, region, widths, s);
+                return;
+            }
+            let (cx, cy) = (x + x0, y);
+            for ny in cy.saturating_sub(reach).max(y0)..=(cy + reach).min(y1) {
+                for nx in cx.saturating_sub(reach).max(x0)..=(cx + reach).min(x1) {
+                    let n = ny * gw + nx;
+                    if s.stamp[n] != epoch {
+                        s.stamp[n] = epoch;
+                        s.zone.push(n);
+                    }
+                }
+            }
+        }
+    }
+    if changed == 0 {
+        return;
+    }
+    s.thin.retain(|&c| s.stamp[c] != epoch);
+    // one square of the room holding the cell, its top-right corner (qx, qy) within `w − 1`
+    let holds = |c: usize| -> bool {
+        let l = grid.cells[c];
+        let w = rule(l);
+        let (x, y) = (c % gw, c / gw);
+        let own = |n: usize| grid.cells[n] == l && region.inside[n];
+        (y..y + w).any(|qy| {
+            (x..x + w).any(|qx| {
+                qx + 1 >= w
+                    && qy + 1 >= w
+                    && qx < gw
+                    && qy < grid.h
+                    && (qy + 1 - w..=qy).all(|sy| (qx + 1 - w..=qx).all(|sx| own(sy * gw + sx)))
+            })
+        })
+    };
+    for &c in &s.zone {
+        if region.inside[c] && rule(grid.cells[c]) > 1 && !holds(c) {
+            s.thin.push(c);
+        }
+    }
+    s.thin.sort_unstable();
 }
 
 /// The first of `labels` (with their rules `widths[label]`, in cells) whose rule no candidate of
@@ -720,16 +876,48 @@ pub fn width_squares_misfit(region: &Region, labels: &[Label], widths: &[u16]) -
 /// The fill-then-clean cycle: fill holes, remove spurs, repeat until a pass removes no spur or
 /// [`MAX_CYCLES`] is reached; always ends on a fill so no cell is left empty when avoidable.
 /// Returns false when empty cells remain that no region room touches.
+///
+/// Only the first cycle scans the region's box. A successful fill leaves no empty cell in the
+/// region, so the next fill's empty cells are exactly those the spur passes emptied; spur passes
+/// run until no spur is left, and a fill changes only the cells it labels, so the next spurs lie
+/// among those cells and their neighbours (a neighbour gains a foreign room, never loses its own).
 pub fn clean(grid: &mut Grid, region: &Region, walls: &Walls, s: &mut Scratch) -> bool {
-    for _ in 0..MAX_CYCLES {
-        if !fill_holes(grid, region, walls, s) {
-            return false;
+    if !fill_holes(grid, region, walls, s) {
+        return false;
+    }
+    find_spurs(grid, region, &mut s.list);
+    for cycle in 0..MAX_CYCLES {
+        if cycle > 0 {
+            if !fill_listed_holes(grid, region, walls, s) {
+                return false;
+            }
+            spurs_near_changes(grid, region, s);
         }
-        if remove_spurs(grid, region, s) == 0 {
+        if remove_listed_spurs(grid, region, s) == 0 {
             return true;
         }
+        // the emptied cells, ascending, are the next fill's holes
+        s.holes.clear();
+        s.holes.extend_from_slice(&s.changed);
+        s.holes.sort_unstable();
     }
-    fill_holes(grid, region, walls, s)
+    fill_listed_holes(grid, region, walls, s)
+}
+
+/// The region's spur cells among the cells of `s.changed` and their neighbours, ascending, into
+/// `s.list`.
+fn spurs_near_changes(grid: &Grid, region: &Region, s: &mut Scratch) {
+    let w = grid.w;
+    s.list.clear();
+    for &c in &s.changed {
+        for n in [c, c - 1, c + 1, c - w, c + w] {
+            if region.inside[n] && is_spur(grid, n) {
+                s.list.push(n);
+            }
+        }
+    }
+    s.list.sort_unstable();
+    s.list.dedup();
 }
 
 #[cfg(test)]
@@ -1055,6 +1243,87 @@ mod tests {
             checked > 300 && misfits > 100,
             "{checked} clean grids, {misfits} misfits"
         );
+    }
+
+    #[test]
+    fn thin_cells_are_the_cells_no_rule_sized_square_covers() {
+        // the definition, square by square, against the sweeps, for rules of up to four cells
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(31);
+        let mut s = Scratch::new(0);
+        let (mut thin, mut covered) = (0, 0);
+        for _ in 0..2000 {
+            let (g, r, _, _) = crate::region::random_case(&mut rng);
+            if r.is_empty() {
+                continue;
+            }
+            let widths: Vec<u16> = (0..7).map(|_| rng.random_range(0..5)).collect();
+            thin_cells_squares(&g, &r, &widths, &mut s);
+            let w = g.w;
+            let ruled = |c: usize, l: Label| g.cells[c] == l && r.inside[c];
+            let want: Vec<usize> = (r.cells.iter().map(|&c| c as usize))
+                .filter(|&c| {
+                    let l = g.cells[c];
+                    let k = widths.get(l as usize).copied().unwrap_or(0) as usize;
+                    if k <= 1 {
+                        return false;
+                    }
+                    let (x, y) = (c % w, c / w);
+                    // top-right corners (cx, cy) of the k × k squares holding the cell
+                    let hit = (x..x + k).any(|cx| {
+                        (y..y + k).any(|cy| {
+                            cx + 1 >= k
+                                && cy + 1 >= k
+                                && cx < w
+                                && cy < g.h
+                                && (cy + 1 - k..=cy)
+                                    .all(|qy| (cx + 1 - k..=cx).all(|qx| ruled(qy * w + qx, l)))
+                        })
+                    });
+                    covered += hit as usize;
+                    !hit
+                })
+                .collect();
+            assert_eq!(s.thin, want);
+            thin += want.len();
+        }
+        assert!(
+            thin > 1000 && covered > 1000,
+            "{thin} thin, {covered} covered"
+        );
+    }
+
+    #[test]
+    fn thin_cells_updated_near_changes_are_the_thin_cells() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_xoshiro::Xoshiro256PlusPlus::seed_from_u64(37);
+        let (mut a, mut b) = (Scratch::new(0), Scratch::new(0));
+        let mut differ = 0;
+        for _ in 0..2000 {
+            let (mut g, r, _, _) = crate::region::random_case(&mut rng);
+            if r.is_empty() {
+                continue;
+            }
+            a.stamp.resize(g.cells.len(), 0);
+            let widths: Vec<u16> = (0..7).map(|_| rng.random_range(0..5)).collect();
+            thin_cells(&g, &r, &widths, &mut a);
+            remember_box(&g, &r, &mut a);
+            let before = a.thin.clone();
+            // a few cells of the region change room (or are emptied)
+            for _ in 0..rng.random_range(0..6) {
+                let c = r.cells[rng.random_range(0..r.cells.len())] as usize;
+                g.cells[c] = [EMPTY, 1, 2, 3][rng.random_range(0..4)];
+            }
+            // near the changes only (no budget), and as the width passes call it
+            update_thin_within(&g, &r, &widths, usize::MAX, &mut a);
+            thin_cells(&g, &r, &widths, &mut b);
+            assert_eq!(a.thin, b.thin);
+            remember_box(&g, &r, &mut a);
+            update_thin(&g, &r, &widths, &mut a);
+            assert_eq!(a.thin, b.thin);
+            differ += (a.thin != before) as usize;
+        }
+        assert!(differ > 300, "only {differ} changes moved the thin cells");
     }
 
     #[test]
