@@ -161,7 +161,8 @@ def generate_building(
             failures.append(f"program {attempt + 1}: {exc}")
             continue
         try:
-            done = _solve_floors(plan, program, seed, solver, progress, description)
+            done = _solve_floors(plan, program, seed, solver, progress, description,
+                                 drop_widths=attempt == PROGRAM_ATTEMPTS - 1)
         except (InfeasibleLayoutError, InvalidInputError) as exc:
             # InvalidInputError here is the solver refusing a program larger than its floor.
             if attempt == PROGRAM_ATTEMPTS - 1:
@@ -181,10 +182,11 @@ def generate_building(
 
 def _solve_floors(
     plan: BuildingPlanner, program: BuildingProgram, seed: int, solver: dict[str, Any], progress: Progress | None,
-    description: str,
+    description: str, *, drop_widths: bool = True,
 ) -> list[Floor]:
     """Every floor of ``program``, solved one after another (copies repeat their original);
-    ``description``'s position words seed the rounds (:mod:`mansion.floorplan.text_seeds`)."""
+    ``description``'s position words seed the rounds (:mod:`mansion.floorplan.text_seeds`);
+    ``drop_widths`` as for :func:`solve_building_floor`."""
     total = program.floor_count
     done: list[Floor] = []
     for index in range(total):
@@ -196,5 +198,6 @@ def _solve_floors(
             continue
         graph = plan.plan_topology(program, index)
         below = done[index - 1] if index > 0 else None
-        done.append(solve_building_floor(program, index, graph, below, seed, solver, description=description))
+        done.append(solve_building_floor(program, index, graph, below, seed, solver, description=description,
+                                         drop_widths=drop_widths))
     return done

@@ -156,11 +156,14 @@ def _solve(
     planner: SeedPlanner | None,
     seed: int,
     solver: dict[str, Any],
+    drop_widths: bool = True,
 ) -> tuple[FloorLayout, RoomGraph, Footprint, int, int, list[str]]:
     errors = []
     if solver.get("settings") is None:
         graph = _widths_at_most(graph, None)  # no width rules asked for
-    for attempt in range(ATTEMPTS):
+    # without ``drop_widths`` the rung without width rules is left to a re-planned program
+    attempts = ATTEMPTS if drop_widths or solver.get("settings") is None else 4 + RELAXED_ATTEMPTS
+    for attempt in range(attempts):
         relax: list[str] = []
         g, fp, sp = graph, footprint, planner
         if attempt >= 2 and any(e.kind == "adjacent" for e in graph.edges):
@@ -199,7 +202,7 @@ def _solve(
         ]
         return layout, g, fp, rng_seed, attempt + 1, relax
     raise InfeasibleLayoutError(
-        f"floor {index} could not be laid out in {ATTEMPTS} attempts; " + " | ".join(errors[-2:])
+        f"floor {index} could not be laid out in {attempts} attempts; " + " | ".join(errors[-2:])
     )
 
 
@@ -226,8 +229,15 @@ def solve_building_floor(
     solver: dict[str, Any],
     seed_planner: SeedPlanner | None = None,
     description: str | None = None,
+    drop_widths: bool = True,
 ) -> Floor:
     """SolveFloorLayout for floor ``index`` (not a copy) of ``program``.
+
+    ``drop_widths``: whether the last rung of the ladder, without width rules, may lay the floor
+    out. The offline driver allows it only to its last program: a layout without rules may keep
+    a 0.5 m neck no agent passes, where a program re-planned with fewer or smaller rooms keeps
+    the rules (building 804 of the seed-0 dataset: a hotel floor laid out without rules, its
+    guest rooms cut off, where the re-planned program lays it out at the first attempt).
 
     ``below`` is the solved floor underneath (None on the ground floor): its load-bearing walls
     become fixed walls here when the program keeps them. ``seed_planner`` is the cutting node's
@@ -257,7 +267,7 @@ def solve_building_floor(
                 planner = SkeletonSeedPlanner(
                     graph.hub.id, {k: p for k, (_, p) in regions.items()}, rest=seed_planner
                 )
-    layout, graph, fp, rng_seed, attempts, relax = _solve(index, graph, fp, planner, seed, solver)
+    layout, graph, fp, rng_seed, attempts, relax = _solve(index, graph, fp, planner, seed, solver, drop_widths)
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
