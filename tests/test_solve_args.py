@@ -37,6 +37,8 @@ def test_default_options_match_the_binding_contract() -> None:
         "refine_walls": True,
         "growth": "balanced",
         "reseeds": 0,
+        "repair": False,
+        "keep_first_round": False,
     }
 
 

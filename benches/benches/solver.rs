@@ -5,7 +5,7 @@
 //! strict attempt (no rule lowered) with wider rules, with the default and the generator's budget.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use mansion_benches::{office, t2d_like, with_widths};
+use mansion_benches::{office, t2d_like, with_minimums, with_widths};
 use mansion_core::seedplan::HeuristicPlanner;
 use mansion_core::solve::{solve_floor, SolveOptions};
 use std::hint::black_box;
@@ -97,6 +97,19 @@ fn bench(c: &mut Criterion) {
             })
         })
     });
+    // the same floor with design minimums on its rooms, without and with the repair pass that
+    // brings rooms up to them once the rounds are done (what the repair costs a floor)
+    for (name, repair) in [("minimums_no_repair", false), ("minimums_repair", true)] {
+        let (graph, fp, opts) = with_minimums(with_widths(office(), 1.0, 1.5, 2), repair);
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                pool.install(|| {
+                    solve_floor(black_box(&graph), &fp, &opts, &mut HeuristicPlanner)
+                        .expect("solvable")
+                })
+            })
+        });
+    }
     // the first attempt of a generated floor with wider rules (rooms ≥ 1.5 m, the hub ≥ 2.0 m)
     // than it can always meet: strictly (no rule lowered, 8 backtracks; a failure is timed like a
     // success, the generator then starts the floor again), and as the generator runs it now (two

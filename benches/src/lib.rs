@@ -11,6 +11,9 @@ fn node(id: &str, kind: &str, area: f64) -> NodeSpec {
         area,
         room_type: None,
         min_width: None,
+        min_area: None,
+        clear_width: None,
+        max_aspect: None,
     }
 }
 
@@ -166,6 +169,23 @@ pub fn with_widths(
         ..opts
     };
     (graph, fp, opts)
+}
+
+/// Design minimums on every room of `graph` (its planned area, a clear width of 2.0 m for
+/// rooms of 12 m² and more and 1.5 m below, boxes at most 3× longer than wide; none on the hub
+/// and cores), with the repair pass on or off.
+pub fn with_minimums(
+    (mut graph, fp, opts): (GraphSpec, FootprintSpec, SolveOptions),
+    repair: bool,
+) -> (GraphSpec, FootprintSpec, SolveOptions) {
+    for n in graph.nodes.iter_mut() {
+        if n.kind == "area" {
+            n.min_area = Some(n.area);
+            n.clear_width = Some(if n.area >= 12.0 { 2.0 } else { 1.5 });
+            n.max_aspect = Some(3.0);
+        }
+    }
+    (graph, fp, SolveOptions { repair, ..opts })
 }
 
 #[cfg(test)]

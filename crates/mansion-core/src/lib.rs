@@ -16,6 +16,7 @@ pub mod growth;
 pub mod place;
 pub mod raster;
 pub mod region;
+pub mod repair;
 pub mod seedplan;
 pub mod solve;
 pub mod topology;

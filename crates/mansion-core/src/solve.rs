@@ -9,6 +9,7 @@ use crate::grid::{Grid, GridFrame, Label, Walls, EMPTY, MAX_ROOMS, OUTSIDE};
 use crate::growth::{Grower, GrowthRule};
 use crate::raster::{self, FootprintSpec};
 use crate::region::{pad, unpad, Region};
+use crate::repair;
 use crate::seedplan::{validate_plan, ChildInfo, SeedPlanner, SeedRequest};
 use crate::vectorise;
 use serde::{Deserialize, Serialize};
@@ -27,6 +28,15 @@ pub struct NodeSpec {
     /// Minimum clear width in metres (None: no rule of its own).
     #[serde(default)]
     pub min_width: Option<f64>,
+    /// What the finished room should reach where a neighbour can give the cells (see
+    /// [`SolveOptions::repair`]): its design table's minimum area (m²), the clear width (m) nine
+    /// tenths of it should have, and its longest box side over the shortest.
+    #[serde(default)]
+    pub min_area: Option<f64>,
+    #[serde(default)]
+    pub clear_width: Option<f64>,
+    #[serde(default)]
+    pub max_aspect: Option<f64>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -86,6 +96,12 @@ pub struct SolveOptions {
     /// rules are lowered (None: lowered at once). The search then goes on from where it stands
     /// instead of starting the floor again.
     pub strict_backtracks: Option<usize>,
+    /// Once every round is cut, bring rooms up to their nodes' `min_area`, `clear_width` and
+    /// `max_aspect` with cells of neighbours that can spare them ([`crate::repair`]).
+    pub repair: bool,
+    /// With `repair`: move no cell between the first round's regions (a floor whose walls
+    /// between them the floor above carries as load-bearing walls).
+    pub keep_first_round: bool,
 }
 
 impl Default for SolveOptions {
@@ -112,6 +128,8 @@ impl Default for SolveOptions {
             reseeds: 0,
             max_backtracks: MAX_BACKTRACKS,
             strict_backtracks: None,
+            repair: false,
+            keep_first_round: false,
         }
     }
 }
@@ -223,6 +241,11 @@ pub struct Floor {
     pub hub: Label,
     /// Undirected graph edges between labels, deduplicated, `a < b`.
     pub edges: Vec<(Label, Label)>,
+    /// Per label, for [`crate::repair`]: minimum area in cells, clear width in cells, box aspect
+    /// (0 where the node gives none).
+    pub min_cells: Vec<usize>,
+    pub clear: Vec<usize>,
+    pub aspect: Vec<f64>,
 }
 
 impl Floor {
@@ -278,12 +301,19 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
                 n.id, n.kind, ROLES
             ));
         }
-        if let Some(mw) = n.min_width {
-            if !(mw.is_finite() && mw > 0.0) {
-                return invalid(format!(
-                    "room '{}' has min_width {} m; a minimum width must be a positive number of metres",
-                    n.id, mw
-                ));
+        for (what, v) in [
+            ("min_width", n.min_width),
+            ("min_area", n.min_area),
+            ("clear_width", n.clear_width),
+            ("max_aspect", n.max_aspect),
+        ] {
+            if let Some(v) = v {
+                if !(v.is_finite() && v > 0.0) {
+                    return invalid(format!(
+                        "room '{}' has {what} {v}; it must be a positive number",
+                        n.id
+                    ));
+                }
             }
         }
         if !(is_core(&n.kind) || n.area.is_finite() && n.area > 0.0) {
@@ -420,6 +450,20 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
         let holds = (n.area * scale / cell_area).sqrt().floor().max(1.0) as usize;
         widths[l] = wanted.min(holds);
     }
+    let to_cells = |m: f64| (m / opts.cell_size - 1e-6).ceil().max(1.0) as usize;
+    let mut min_cells = vec![0usize; names.len()];
+    let mut clear = vec![0usize; names.len()];
+    let mut aspect = vec![0.0f64; names.len()];
+    for (l, n) in graph.nodes.iter().enumerate() {
+        if is_core(&n.kind) {
+            continue;
+        }
+        min_cells[l] = n
+            .min_area
+            .map_or(0, |a| (a / cell_area - 1e-6).ceil() as usize);
+        clear[l] = n.clear_width.map_or(0, to_cells);
+        aspect[l] = n.max_aspect.unwrap_or(0.0);
+    }
     let hub = ids[mains[0]] as Label;
     // InitLayout: the hub owns the whole free region
     for c in grid.cells.iter_mut() {
@@ -457,6 +501,9 @@ pub fn prepare(graph: &GraphSpec, fp: &FootprintSpec, opts: &SolveOptions) -> Re
         widths,
         hub,
         edges: edges.into_iter().collect(),
+        min_cells,
+        clear,
+        aspect,
     })
 }
 
@@ -971,6 +1018,34 @@ pub fn solve_floor(
         });
         t += 1;
     }
+    if opts.repair {
+        let fixed: Vec<bool> = (0..n).map(|l| floor.is_core(l as Label)).collect();
+        // each label's first-round region: the hub's, or that of the first-round room it was
+        // cut from (rounds come in breadth-first order, so a parent's region is known first)
+        let mut region: Vec<Label> = (0..n).map(|l| l as Label).collect();
+        if opts.keep_first_round {
+            for (parent, children) in &rounds {
+                for &c in children {
+                    region[c as usize] = if *parent == floor.hub {
+                        c
+                    } else {
+                        region[*parent as usize]
+                    };
+                }
+            }
+        }
+        let min = repair::Minimums {
+            cells: &floor.min_cells,
+            clear: &floor.clear,
+            rule: &floor.widths,
+            aspect: &floor.aspect,
+            fixed: &fixed,
+            edges: &floor.edges,
+            region: opts.keep_first_round.then_some(&region[..]),
+            contact: cut_opts.min_contact,
+        };
+        repair::repair(&mut grid, &floor.walls, &min);
+    }
     let mut sol = output(&floor, &grid);
     sol.diagnostics = Diagnostics {
         rounds: diag,
@@ -1114,6 +1189,9 @@ mod tests {
             area,
             room_type: None,
             min_width: None,
+            min_area: None,
+            clear_width: None,
+            max_aspect: None,
         }
     }
 

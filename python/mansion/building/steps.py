@@ -145,8 +145,11 @@ def _widths_at_most(graph: RoomGraph, width: float | None) -> RoomGraph:
 
 def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSettings:
     """The solver settings of generated floors: the floor-wide minimum width (``width`` m,
-    :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``, and :data:`RESEEDS`."""
-    return SolverSettings(min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS)
+    :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``, :data:`RESEEDS`, and the
+    repair of rooms left below their design minimums."""
+    return SolverSettings(
+        min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS, repair=True
+    )
 
 
 def _solve(
@@ -267,6 +270,10 @@ def solve_building_floor(
                 planner = SkeletonSeedPlanner(
                     graph.hub.id, {k: p for k, (_, p) in regions.items()}, rest=seed_planner
                 )
+    if program.load_bearing_walls and solver.get("settings") is not None:
+        # the floor above carries the walls between this floor's first-round regions: the
+        # repair moves cells only within a region, so those walls stay where the cut put them
+        solver = {**solver, "settings": solver["settings"].model_copy(update={"keep_first_round": True})}
     layout, graph, fp, rng_seed, attempts, relax = _solve(index, graph, fp, planner, seed, solver, drop_widths)
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []

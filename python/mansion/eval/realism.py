@@ -42,7 +42,7 @@ from shapely.geometry.base import BaseGeometry
 from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError
 from mansion.models.building import Building
-from mansion.models.room_design import corridor_width, design_key, room_design
+from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, design_key, room_design
 
 __all__ = [
     "BENCH_TYPES",
@@ -69,7 +69,7 @@ DOOR_WIDTH = 0.9
 #: Share of a room's area that may be narrower than a limit before the room is flagged.
 TOLERANCE = 0.10
 #: Longest bounding box side over the shortest above which a non-circulation room is elongated.
-MAX_BOX_ASPECT = 3.0
+MAX_BOX_ASPECT = ELONGATED_ASPECT
 #: Metres per pixel of the T2D (RPLAN) 256 images.
 T2D_METRES_PER_PIXEL = 0.09
 #: Room types of the real plans that serve other rooms as circulation does.

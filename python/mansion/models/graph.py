@@ -56,6 +56,27 @@ class RoomNode(BaseModel):
             "(None: no limit of its own). Planners fill it from the room design table."
         ),
     )
+    min_area: float | None = Field(
+        default=None,
+        gt=0.0,
+        description=(
+            "The design table's minimum area in m²: with the solver's ``repair`` setting, a room "
+            "left below it takes cells from a neighbour that can spare them (None: no minimum)."
+        ),
+    )
+    clear_width: float | None = Field(
+        default=None,
+        gt=0.0,
+        description=(
+            "The design table's clear width in metres, which nine tenths of the room should have "
+            "(``repair`` widens a room below it; ``min_width`` is the rule every candidate must meet)."
+        ),
+    )
+    max_aspect: float | None = Field(
+        default=None,
+        gt=0.0,
+        description="Longest side of the room's bounding box over its shortest (``repair``; None: any).",
+    )
 
     @model_validator(mode="before")
     @classmethod

@@ -56,12 +56,19 @@ __all__ = [
     "CORRIDOR_WIDTH",
     "DEFAULT_CORRIDOR_WIDTH",
     "DEFAULT_DESIGN",
+    "ELONGATED_ASPECT",
     "ROOM_DESIGN",
     "RoomDesign",
     "corridor_width",
     "design_key",
     "room_design",
 ]
+
+
+#: Longest side of a room's bounding box over its shortest beyond which a room that is not
+#: circulation counts as elongated (issue 14's measure; the table's ``max_aspect`` is the preferred
+#: proportion, this the limit).
+ELONGATED_ASPECT = 3.0
 
 
 @dataclass(frozen=True)

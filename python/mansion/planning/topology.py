@@ -17,10 +17,23 @@ import math
 
 from mansion.models.building import BuildingCore, FloorProgram
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
-from mansion.models.room_design import CORRIDOR_TYPES, corridor_width, design_key, room_design
+from mansion.models.room_design import (
+    CORRIDOR_TYPES,
+    ELONGATED_ASPECT,
+    corridor_width,
+    design_key,
+    room_design,
+)
 from mansion.planning.vocabulary import room_kind
 
-__all__ = ["MAX_NODE_WIDTH", "WIDE_ROOM_WIDTH", "floor_graph", "min_width", "with_min_widths"]
+__all__ = [
+    "MAX_NODE_WIDTH",
+    "WIDE_ROOM_WIDTH",
+    "design_minimums",
+    "floor_graph",
+    "min_width",
+    "with_min_widths",
+]
 
 #: A room's minimum width never asks for a squarer room than this (width² · aspect ≤ area), so a
 #: room squeezed to its minimum area can still be laid out.
@@ -56,14 +69,34 @@ def min_width(room_type: str, area: float, building_type: str | None) -> float:
     return round(min(width, cap, math.sqrt(area / _MIN_ASPECT)), 2)
 
 
+def design_minimums(room_type: str, building_type: str | None) -> dict[str, float | None]:
+    """What the solver's repair brings a finished room of ``room_type`` up to
+    (:attr:`RoomNode.min_area`, ``clear_width``, ``max_aspect``): the table's minimum area, its
+    clear width (circulation's: its building type's corridor width), and for rooms that are not circulation the
+    box proportions beyond which a room counts as elongated. The same figures as
+    ``mansion eval realism`` measures."""
+    d = room_design(room_type)
+    width = corridor_width(building_type) if d.circulation else d.min_width
+    return {
+        "min_area": d.min_area,
+        "clear_width": width,
+        "max_aspect": None if d.circulation else max(d.max_aspect, ELONGATED_ASPECT),
+    }
+
+
 def with_min_widths(graph: RoomGraph, building_type: str | None) -> RoomGraph:
-    """``graph`` with :attr:`RoomNode.min_width` filled for every room that has none (cores
-    keep none: the footprint fixes them)."""
-    nodes = [
-        n if n.is_core or n.min_width is not None or n.area <= 0
-        else n.model_copy(update={"min_width": min_width(n.room_type, n.area, building_type)})
-        for n in graph.nodes
-    ]
+    """``graph`` with :attr:`RoomNode.min_width` filled for every room that has none, and the
+    design minimums of :func:`design_minimums` where a room has none of them (cores keep none:
+    the footprint fixes them)."""
+    def filled(n: RoomNode) -> RoomNode:
+        update: dict[str, float | None] = {}
+        if n.min_width is None:
+            update["min_width"] = min_width(n.room_type, n.area, building_type)
+        if n.min_area is None and n.clear_width is None and n.max_aspect is None:
+            update.update(design_minimums(n.room_type, building_type))
+        return n.model_copy(update=update) if update else n
+
+    nodes = [n if n.is_core or n.area <= 0 else filled(n) for n in graph.nodes]
     return RoomGraph(nodes=nodes, edges=graph.edges)
 
 
@@ -80,6 +113,7 @@ def floor_graph(
             id=hub.id, type="main", area=hub.area, room_type=hub.room_type,
             floor_material=hub.floor_material, wall_material=hub.wall_material,
             open_relation="open", min_width=min_width(hub.room_type, hub.area, building_type),
+            **design_minimums(hub.room_type, building_type),
         )
     ]
     edges: list[RoomEdge] = []
@@ -112,6 +146,7 @@ def floor_graph(
                 wall_material=room.wall_material,
                 open_relation="open" if room_kind(room.room_type).open else "door",
                 min_width=min_width(room.room_type, room.area, building_type),
+                **design_minimums(room.room_type, building_type),
             )
         )
         edges.append(RoomEdge(source=parent, target=room.id, kind="access"))

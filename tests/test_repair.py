@@ -1,0 +1,211 @@
+"""The solver's repair (``SolverSettings.repair``): rooms left below their nodes' ``min_area``,
+``clear_width`` or ``max_aspect`` take rows and columns from neighbours that can spare them, and
+nothing else about the layout gets worse (issue 14)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from shapely.geometry import Polygon
+from test_min_width import office_floor
+from test_solver_properties import CELL, check_layout, instance
+
+import mansion
+from mansion import InfeasibleLayoutError, InvalidInputError, RoomGraph
+from mansion.building import generate_building
+from mansion.eval.realism import box_aspect, narrow_share
+from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
+from mansion.planning.topology import design_minimums
+
+MASK = np.ones((20, 24), dtype=bool)
+
+
+def with_minimums(graph: RoomGraph, **by_room: dict[str, float]) -> RoomGraph:
+    nodes = [n.model_copy(update=by_room.get(n.id, {})) for n in graph.nodes]
+    return RoomGraph(nodes=nodes, edges=graph.edges)
+
+
+def areas(layout: mansion.FloorLayout) -> dict[str, float]:
+    return {r.id: Polygon(r.polygon, r.holes).area for r in layout.rooms}
+
+
+def realised(layout: mansion.FloorLayout, graph: RoomGraph, contact: float = 1.0) -> set[frozenset[str]]:
+    """The graph's edges whose rooms share a straight wall of at least ``contact`` metres."""
+    touching = {frozenset((a.a, a.b)) for a in layout.adjacencies if a.longest >= contact - 1e-9}
+    return {frozenset((e.source, e.target)) for e in graph.edges} & touching
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_room_planned_below_its_minimum_area_reaches_it(seed: int) -> None:
+    graph, footprint = office_floor()
+    # the store is planned at 5 m² but its type needs 9 m²: growth stops at its target, the
+    # repair takes the rest from the corridor, which has more than it needs
+    ruled = with_minimums(graph, store={"min_area": 9.0}, corridor={"min_area": 4.0})
+    plain = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed)
+    fixed = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed, settings={"repair": True})
+    assert areas(plain)["store"] < 9.0
+    assert areas(fixed)["store"] >= 9.0
+    assert areas(fixed)["corridor"] >= 4.0
+    check_layout(fixed, footprint, MASK)
+    assert realised(fixed, ruled) >= realised(plain, ruled)
+
+
+def test_a_room_narrower_than_its_clear_width_is_widened() -> None:
+    """The phone booth asks 1.5 m: on the seeds that lay it narrower, the repair widens it
+    wherever its neighbours can give a row without becoming slivers themselves, and never
+    leaves it narrower."""
+    graph, footprint = office_floor()
+    ruled = with_minimums(graph, phone={"clear_width": 1.5, "min_area": 3.0})
+    narrow, widened = 0, 0
+    for seed in range(12):
+        plain = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed)
+        fixed = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed, settings={"repair": True})
+        before = narrow_share(next(Polygon(r.polygon, r.holes) for r in plain.rooms if r.id == "phone"), 1.5)
+        after = narrow_share(next(Polygon(r.polygon, r.holes) for r in fixed.rooms if r.id == "phone"), 1.5)
+        check_layout(fixed, footprint, MASK)
+        assert after <= before + 1e-9
+        if before > 0.10:
+            narrow += 1
+            widened += after <= 0.10
+    # seeds 2, 5, 7 and 8 widen; seed 1's booth sits between a kitchen and a copy room that
+    # would each keep a 1 m nub beyond a tenth of their area
+    assert narrow >= 4 and widened >= narrow - 1
+
+
+def shortfall(layout: mansion.FloorLayout, minimums: dict[str, dict[str, float]]) -> int:
+    total = 0
+    for room in layout.rooms:
+        if room.id not in minimums:
+            continue
+        shape = Polygon(room.polygon, room.holes)
+        cells = round(shape.area / CELL**2)
+        total += max(0, math.ceil(minimums[room.id]["min_area"] / CELL**2 - 1e-9) - cells)
+        x0, y0, x1, y1 = (round(v / CELL) for v in shape.bounds)
+        short, long = sorted((x1 - x0, y1 - y0))
+        if long > ELONGATED_ASPECT * short:
+            total += math.ceil(long - ELONGATED_ASPECT * short) * short
+    return total
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(st.integers(min_value=0, max_value=10**9), st.floats(min_value=1.0, max_value=3.0))
+def test_repair_keeps_layouts_whole_and_never_leaves_a_room_worse(seed: int, factor: float) -> None:
+    """Random floors whose rooms all ask ``factor`` times their planned area: the repaired layout
+    still tiles the free region in connected rooms, keeps every edge it realised, and no room
+    that reached its minimum before ends below it."""
+    built = instance(seed)
+    if built is None:
+        return
+    graph, footprint, mask = built
+    minimums = {
+        n.id: {"min_area": round(n.area * factor, 2), "max_aspect": ELONGATED_ASPECT}
+        for n in graph.nodes if not n.is_core
+    }
+    ruled = with_minimums(graph, **minimums)
+    try:
+        plain = mansion.solve_floor(ruled, footprint, cell_size=CELL, retries=4, batch=40)
+    except InfeasibleLayoutError:
+        return
+    fixed = mansion.solve_floor(ruled, footprint, cell_size=CELL, retries=4, batch=40, settings={"repair": True})
+    check_layout(fixed, footprint, mask)
+    assert realised(fixed, ruled) >= realised(plain, ruled)
+    before, after = areas(plain), areas(fixed)
+    for rid, m in minimums.items():
+        if before[rid] >= m["min_area"] - 1e-9:
+            assert after[rid] >= m["min_area"] - 1e-9, rid
+    # the rooms' total shortfall, as the repair counts it in cells, never grows: cells below the
+    # minimum area plus, for a box longer than the aspect allows, the excess length times the
+    # short side (a room may give area to a neighbour it leaves less elongated)
+    assert shortfall(fixed, minimums) <= shortfall(plain, minimums)
+    # repair is deterministic
+    again = mansion.solve_floor(ruled, footprint, cell_size=CELL, retries=4, batch=40, settings={"repair": True})
+    assert again.grid == fixed.grid
+
+
+@pytest.mark.parametrize("field", ["min_area", "clear_width", "max_aspect"])
+def test_bad_minimums_are_named(field: str) -> None:
+    graph, footprint = office_floor()
+    nodes = [n.model_dump() for n in graph.nodes]
+    nodes[1][field] = -1.0
+    with pytest.raises(InvalidInputError, match=field):
+        mansion.solve_floor({"nodes": nodes, "edges": [e.model_dump() for e in graph.edges]}, footprint)
+
+
+def test_generated_floors_carry_the_design_tables_minimums() -> None:
+    b = generate_building("a 2-storey hotel", building_type="hotel", floors=2, seed=3)
+    for floor in b.floors:
+        for node in floor.graph.nodes:
+            if node.is_core:
+                continue
+            d = room_design(node.room_type)
+            assert node.min_area == d.min_area
+            assert node.clear_width == (corridor_width("hotel") if d.circulation else d.min_width)
+            assert node.max_aspect == (None if d.circulation else max(d.max_aspect, ELONGATED_ASPECT))
+            assert design_minimums(node.room_type, "hotel") == {
+                "min_area": node.min_area, "clear_width": node.clear_width, "max_aspect": node.max_aspect,
+            }
+
+
+def test_repair_brings_generated_rooms_closer_to_the_table() -> None:
+    """The same floors with and without the repair: fewer rooms below their minimum area, none
+    more elongated than the limit where none was."""
+    from mansion.building import steps
+
+    def rooms(repair: bool) -> list[tuple[str, Polygon]]:
+        settings_of = steps.floor_settings
+
+        def patched(cell_size: float, width: float = steps.MIN_CLEAR_WIDTH):  # noqa: ANN202
+            return settings_of(cell_size, width).model_copy(update={"repair": repair})
+
+        mp = pytest.MonkeyPatch()
+        mp.setattr(steps, "floor_settings", patched)
+        try:
+            b = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=6)
+        finally:
+            mp.undo()
+        return [
+            (r.room_type, Polygon(r.polygon, r.holes))
+            for f in b.floors if f.copy_of is None for r in f.layout.rooms if not r.is_core
+        ]
+
+    def below(rs: list[tuple[str, Polygon]]) -> int:
+        return sum(p.area < room_design(t).min_area - 1e-3 for t, p in rs)
+
+    def elongated(rs: list[tuple[str, Polygon]]) -> int:
+        return sum(not room_design(t).circulation and box_aspect(p) > ELONGATED_ASPECT for t, p in rs)
+
+    plain, fixed = rooms(False), rooms(True)
+    assert below(fixed) < below(plain)
+    assert elongated(fixed) <= elongated(plain)
+
+
+def test_keep_first_round_leaves_the_walls_between_first_round_regions() -> None:
+    """With ``keep_first_round`` the repair still moves cells inside the first round's regions
+    (the phone and copy room are cut from the first office's region here), but the walls
+    between regions, which a floor above carries, do not move; without it they may."""
+    from mansion.building.load_bearing import first_round_walls
+
+    graph, footprint = office_floor()
+    edges = [e.model_copy(update={"source": "office_1"}) if e.target in ("phone", "copy") else e for e in graph.edges]
+    nodes = [n.model_copy(update={"area": 20.0}) if n.id == "office_1" else n for n in graph.nodes]
+    ruled = with_minimums(
+        RoomGraph(nodes=nodes, edges=edges),
+        phone={"min_area": 4.0, "clear_width": 1.5},
+        copy={"min_area": 6.0, "clear_width": 2.0},
+    )
+    repaired, walls_moved = 0, 0
+    for seed in range(8):
+        plain = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed)
+        kept = mansion.solve_floor(
+            ruled, footprint, cell_size=CELL, rng_seed=seed, settings={"repair": True, "keep_first_round": True}
+        )
+        free = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed, settings={"repair": True})
+        check_layout(kept, footprint, MASK)
+        assert sorted(first_round_walls(kept, ruled)) == sorted(first_round_walls(plain, ruled))
+        repaired += kept.grid.labels != plain.grid.labels
+        walls_moved += sorted(first_round_walls(free, ruled)) != sorted(first_round_walls(plain, ruled))
+    assert repaired >= 4 and walls_moved >= 2
