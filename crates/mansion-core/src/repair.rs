@@ -25,6 +25,7 @@
 //! solver grid, so the result is deterministic.
 
 use crate::grid::{Grid, Label, Walls, EMPTY, OUTSIDE};
+use crate::topology::square_coverage;
 
 /// What a room must reach, per label (index = label).
 pub struct Minimums<'a> {
@@ -584,7 +585,7 @@ fn measure(grid: &Grid, l: Label, within: Option<BBox>, min: &Minimums) -> Optio
 fn uncovered(grid: &Grid, bbox: BBox, l: Label, width: usize) -> usize {
     let (x0, y0, x1, y1) = bbox;
     let bw = x1 - x0 + 1;
-    let cover = coverage(grid, bbox, l, width);
+    let cover = square_coverage(grid, bbox, l, width);
     (y0..=y1)
         .flat_map(|y| (x0..=x1).map(move |x| (x, y)))
         .filter(|&(x, y)| {
@@ -598,56 +599,13 @@ fn uncovered(grid: &Grid, bbox: BBox, l: Label, width: usize) -> usize {
 fn uncovered_cells(grid: &Grid, bbox: BBox, l: Label, width: usize) -> Vec<usize> {
     let (x0, y0, x1, y1) = bbox;
     let bw = x1 - x0 + 1;
-    let cover = coverage(grid, bbox, l, width);
+    let cover = square_coverage(grid, bbox, l, width);
     (y0..=y1)
         .flat_map(|y| (x0..=x1).map(move |x| y * grid.w + x))
         .filter(|&c| {
             grid.cells[c] == l && cover[(c / grid.w - y0) * (bw + 1) + c % grid.w - x0] <= 0
         })
         .collect()
-}
-
-/// How many `width × width` squares of room `l` cover each cell of `bbox` (row stride: the
-/// box's width plus one): the largest square ending at each cell (dynamic programming), each
-/// big enough one stamped onto a 2-D difference array, whose prefix sums count the squares.
-fn coverage(grid: &Grid, bbox: BBox, l: Label, width: usize) -> Vec<i32> {
-    let (x0, y0, x1, y1) = bbox;
-    let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
-    let mut sq = vec![0u16; bw * bh];
-    let mut diff = vec![0i32; (bw + 1) * (bh + 1)];
-    for y in 0..bh {
-        for x in 0..bw {
-            if grid.cells[(y + y0) * grid.w + x + x0] != l {
-                continue;
-            }
-            let v = if x == 0 || y == 0 {
-                1
-            } else {
-                1 + sq[y * bw + x - 1]
-                    .min(sq[(y - 1) * bw + x])
-                    .min(sq[(y - 1) * bw + x - 1])
-            };
-            sq[y * bw + x] = v;
-            if v as usize >= width {
-                let (ax, ay) = (x + 1 - width, y + 1 - width);
-                diff[ay * (bw + 1) + ax] += 1;
-                diff[ay * (bw + 1) + x + 1] -= 1;
-                diff[(y + 1) * (bw + 1) + ax] -= 1;
-                diff[(y + 1) * (bw + 1) + x + 1] += 1;
-            }
-        }
-    }
-    for y in 0..=bh {
-        for x in 1..=bw {
-            diff[y * (bw + 1) + x] += diff[y * (bw + 1) + x - 1];
-        }
-    }
-    for y in 1..=bh {
-        for x in 0..=bw {
-            diff[y * (bw + 1) + x] += diff[(y - 1) * (bw + 1) + x];
-        }
-    }
-    diff
 }
 
 /// Do the 2 × 2 blocks of room `l` (inside `bbox`) form one edge-connected set (or none)? A

@@ -265,15 +265,31 @@ pub fn min_width_ok(grid: &Grid, region: &Region, label: Label, width: usize) ->
         return true;
     }
     let (x0, y0, x1, y1) = region.bbox;
+    let bw = x1 - x0 + 1;
+    let cover = square_coverage(grid, region.bbox, label, width);
+    (y0..=y1).all(|y| {
+        (x0..=x1)
+            .all(|x| grid.cells[y * grid.w + x] != label || cover[(y - y0) * (bw + 1) + x - x0] > 0)
+    })
+}
+
+/// How many `width × width` squares of `label` cover each cell of `bbox` (row-major, row stride
+/// the box's width plus one): the side of the largest same-label square ending at each cell
+/// (dynamic programming), each big enough square stamped onto a 2-D difference array whose
+/// prefix sums are the counts.
+pub fn square_coverage(
+    grid: &Grid,
+    bbox: (usize, usize, usize, usize),
+    label: Label,
+    width: usize,
+) -> Vec<i32> {
+    let (x0, y0, x1, y1) = bbox;
     let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
-    // side of the largest same-label square whose top-right cell is (x, y)
     let mut sq = vec![0u16; bw * bh];
-    // covered[.] counts squares of side `width` covering a cell, via a 2-D difference array
     let mut diff = vec![0i32; (bw + 1) * (bh + 1)];
     for y in 0..bh {
         for x in 0..bw {
-            let c = (y + y0) * grid.w + x + x0;
-            if grid.cells[c] != label {
+            if grid.cells[(y + y0) * grid.w + x + x0] != label {
                 continue;
             }
             let v = if x == 0 || y == 0 {
@@ -293,7 +309,6 @@ pub fn min_width_ok(grid: &Grid, region: &Region, label: Label, width: usize) ->
             }
         }
     }
-    // prefix sums turn the difference array into coverage counts
     for y in 0..=bh {
         for x in 1..=bw {
             diff[y * (bw + 1) + x] += diff[y * (bw + 1) + x - 1];
@@ -304,15 +319,7 @@ pub fn min_width_ok(grid: &Grid, region: &Region, label: Label, width: usize) ->
             diff[y * (bw + 1) + x] += diff[(y - 1) * (bw + 1) + x];
         }
     }
-    for y in 0..bh {
-        for x in 0..bw {
-            let c = (y + y0) * grid.w + x + x0;
-            if grid.cells[c] == label && diff[y * (bw + 1) + x] <= 0 {
-                return false;
-            }
-        }
-    }
-    true
+    diff
 }
 
 #[cfg(test)]
