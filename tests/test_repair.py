@@ -126,6 +126,27 @@ def test_repair_keeps_layouts_whole_and_never_leaves_a_room_worse(seed: int, fac
     assert again.grid == fixed.grid
 
 
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(st.integers(min_value=0, max_value=10**9))
+def test_rebalanced_rounds_keep_layouts_whole_and_edges_realised(seed: int) -> None:
+    """Random floors with every round rebalanced toward its targets: the layout still tiles the
+    free region in connected rooms, realises every edge of the graph with a wall of the contact
+    length, and is the same on a second run."""
+    built = instance(seed)
+    if built is None:
+        return
+    graph, footprint, mask = built
+    options = {"cell_size": CELL, "retries": 4, "batch": 40, "settings": {"rebalance": True, "repair": True}}
+    try:
+        layout = mansion.solve_floor(graph, footprint, **options)
+    except InfeasibleLayoutError:
+        return
+    check_layout(layout, footprint, mask)
+    assert realised(layout, graph) == {frozenset((e.source, e.target)) for e in graph.edges}
+    again = mansion.solve_floor(graph, footprint, **options)
+    assert again.grid == layout.grid
+
+
 @pytest.mark.parametrize("field", ["min_area", "clear_width", "max_aspect"])
 def test_bad_minimums_are_named(field: str) -> None:
     graph, footprint = office_floor()
@@ -150,16 +171,17 @@ def test_generated_floors_carry_the_design_tables_minimums() -> None:
             }
 
 
-def test_repair_brings_generated_rooms_closer_to_the_table() -> None:
-    """The same floors with and without the repair: fewer rooms below their minimum area, none
-    more elongated than the limit where none was."""
+def test_repair_and_rebalance_bring_generated_rooms_closer_to_the_table() -> None:
+    """The same hospital floors without either pass, with the final repair, and with the
+    rounds rebalanced too: fewer rooms below their minimum area at each step, a smaller total
+    shortfall, and none more elongated than the limit where none was."""
     from mansion.building import steps
 
-    def rooms(repair: bool) -> list[tuple[str, Polygon]]:
+    def rooms(**update: bool) -> list[tuple[str, Polygon]]:
         settings_of = steps.floor_settings
 
         def patched(cell_size: float, width: float = steps.MIN_CLEAR_WIDTH):  # noqa: ANN202
-            return settings_of(cell_size, width).model_copy(update={"repair": repair})
+            return settings_of(cell_size, width).model_copy(update=update)
 
         mp = pytest.MonkeyPatch()
         mp.setattr(steps, "floor_settings", patched)
@@ -175,12 +197,18 @@ def test_repair_brings_generated_rooms_closer_to_the_table() -> None:
     def below(rs: list[tuple[str, Polygon]]) -> int:
         return sum(p.area < room_design(t).min_area - 1e-3 for t, p in rs)
 
+    def short(rs: list[tuple[str, Polygon]]) -> float:
+        return sum(max(0.0, room_design(t).min_area - p.area) for t, p in rs)
+
     def elongated(rs: list[tuple[str, Polygon]]) -> int:
         return sum(not room_design(t).circulation and box_aspect(p) > ELONGATED_ASPECT for t, p in rs)
 
-    plain, fixed = rooms(False), rooms(True)
-    assert below(fixed) < below(plain)
-    assert elongated(fixed) <= elongated(plain)
+    plain = rooms(repair=False, rebalance=False)
+    repaired = rooms(repair=True, rebalance=False)
+    both = rooms(repair=True, rebalance=True)
+    assert below(both) < below(repaired) < below(plain)
+    assert short(both) < short(repaired) < short(plain)
+    assert elongated(both) <= elongated(repaired) <= elongated(plain)
 
 
 def test_keep_first_round_leaves_the_walls_between_first_round_regions() -> None:

@@ -98,7 +98,7 @@ fn bench(c: &mut Criterion) {
         })
     });
     // the same floor with design minimums on its rooms, without and with the repair pass that
-    // brings rooms up to them once the rounds are done (what the repair costs a floor)
+    // brings rooms up to them, each round rebalanced too (what the two cost a floor)
     for (name, repair) in [("minimums_no_repair", false), ("minimums_repair", true)] {
         let (graph, fp, opts) = with_minimums(with_widths(office(), 1.0, 1.5, 2), repair);
         g.bench_function(name, |b| {

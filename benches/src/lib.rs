@@ -173,7 +173,7 @@ pub fn with_widths(
 
 /// Design minimums on every room of `graph` (its planned area, a clear width of 2.0 m for
 /// rooms of 12 m² and more and 1.5 m below, boxes at most 3× longer than wide; none on the hub
-/// and cores), with the repair pass on or off.
+/// and cores), with the repair and the rounds' rebalance on or off.
 pub fn with_minimums(
     (mut graph, fp, opts): (GraphSpec, FootprintSpec, SolveOptions),
     repair: bool,
@@ -185,7 +185,15 @@ pub fn with_minimums(
             n.max_aspect = Some(3.0);
         }
     }
-    (graph, fp, SolveOptions { repair, ..opts })
+    (
+        graph,
+        fp,
+        SolveOptions {
+            repair,
+            rebalance: repair,
+            ..opts
+        },
+    )
 }
 
 #[cfg(test)]

@@ -1,13 +1,21 @@
-//! Rooms brought up to their minimums once every cut round is done (issue 14).
+//! Rooms brought up to their minimums once every cut round is done, and each round's rooms
+//! toward their targets after it is cut (issue 14).
 //!
 //! Growth caps each room at its target, so a child seeded among siblings that reach theirs first
 //! stops short, and the round's parent (a hub, a corridor) keeps the cells no child reached. The
 //! rounds cannot see that a room ended below its design table's minimum area or clear width, or
-//! longer than its proportions allow; this pass can, on the finished floor. It moves one face of
-//! a room outward at a time: the cells one step beyond the room in one direction change hands, a
-//! row or a column of the room's width, so rooms stay rectangular where they were. The options
-//! are the face against one neighbour (the donor), each straight run of it, and the whole face
-//! across all its neighbours. A move is taken only when
+//! longer than its proportions allow; this pass can, on the finished floor. A move is one of
+//!
+//! - a face: the cells one step beyond the room in one direction change hands, a row or a
+//!   column of the room's width, so rooms stay rectangular where they were; from one neighbour
+//!   (the donor), one straight run of it, or the whole face across all its neighbours;
+//! - a slide: a donor that cannot spare the face's cells takes as many from the room beyond it,
+//!   each of its lines across the face moving over by one cell (a corridor strip between short
+//!   rooms and a hub with cells to spare);
+//! - a hand-off: a piece of the room that no square of its clear width covers goes to the
+//!   neighbour it shares most wall with.
+//!
+//! A move is taken only when
 //!
 //! - the room's shortfall (cells below its minimum area; when more than a tenth of it is narrower
 //!   than its clear width, the cells beyond that tenth plus its length times the width it lacks
@@ -16,13 +24,15 @@
 //! - no room gains a defect it did not have (below area, below width, too elongated, a sliver:
 //!   more than a tenth of it in parts no 3 × 3 square covers, no 3 × 3 square at all) nor more
 //!   cells under its solver width rule;
-//! - every donor stays in one piece, and every graph edge and every run of exterior wall of the
-//!   rooms that reached the minimum contact still does;
-//! - no cell crosses a fixed wall, and cores never change.
+//! - every room that gives cells stays in one piece, its 2 × 2 blocks too where they were (no
+//!   neck one cell wide), and every graph edge and every run of exterior wall of the rooms that
+//!   reached the minimum contact still does;
+//! - no cell crosses a fixed wall, cores never change, and with regions given no cell leaves
+//!   its first-round region.
 //!
-//! Faces are tried in all four directions against every donor; the move that lowers the shortfall
-//! most (then moves fewest cells, then comes first) wins. Everything is counted in cells of the
-//! solver grid, so the result is deterministic.
+//! The move that lowers the shortfall most (then moves fewest cells, then comes first) wins, and
+//! the total shortfall falls with every move, so the pass ends. Everything is counted in cells
+//! of the solver grid, so the result is deterministic.
 
 use crate::grid::{Grid, Label, Walls, EMPTY, OUTSIDE};
 use crate::topology::square_coverage;
@@ -57,6 +67,8 @@ const USABLE: usize = 3;
 const TOLERANCE: f64 = 0.10;
 
 type BBox = (usize, usize, usize, usize);
+/// A move: its gain in shortfall, its size in cells, and each cell with the label it takes.
+type Move = (usize, usize, Vec<(usize, Label)>);
 
 /// One room's measures.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -101,7 +113,7 @@ impl Measure {
 }
 
 /// Bring the rooms of `grid` (padded solver grid) up to `min` where a neighbour can give the
-/// cells. Returns the number of faces moved.
+/// cells. Returns the number of moves made.
 pub fn repair(grid: &mut Grid, walls: &Walls, min: &Minimums) -> usize {
     let n = min.cells.len();
     let mut moved = 0;
@@ -122,15 +134,15 @@ pub fn repair(grid: &mut Grid, walls: &Walls, min: &Minimums) -> usize {
                 let grow = best_move(grid, walls, min, r, &before);
                 let shed = best_shed(grid, walls, min, r, &before);
                 // the larger gain wins, then the fewer cells, then growing
-                let (cells, to) = match (grow, shed) {
+                let cells = match (grow, shed) {
                     (Some((g, k, cells)), Some((h, m, _, _))) if g > h || (g == h && k <= m) => {
-                        (cells, r)
+                        cells
                     }
-                    (_, Some((_, _, cells, d))) => (cells, d),
-                    (Some((_, _, cells)), None) => (cells, r),
+                    (_, Some((_, _, cells, d))) => cells.into_iter().map(|c| (c, d)).collect(),
+                    (Some((_, _, cells)), None) => cells,
                     (None, None) => break,
                 };
-                for c in cells {
+                for (c, to) in cells {
                     grid.cells[c] = to;
                 }
                 moved += 1;
@@ -144,17 +156,18 @@ pub fn repair(grid: &mut Grid, walls: &Walls, min: &Minimums) -> usize {
     moved
 }
 
-/// The best face move for room `r`, if any passes: its gain, its size and its cells.
+/// The best face move for room `r`, if any passes: its gain, its size and its cells with the
+/// labels they take.
 fn best_move(
     grid: &mut Grid,
     walls: &Walls,
     min: &Minimums,
     r: Label,
     before: &Measure,
-) -> Option<(usize, usize, Vec<usize>)> {
+) -> Option<Move> {
     let w = grid.w;
     let (x0, y0, x1, y1) = before.bbox;
-    let mut best: Option<(usize, usize, Vec<usize>)> = None;
+    let mut best: Option<Move> = None;
     let steps: [isize; 4] = [-1, 1, -(w as isize), w as isize];
     let mut faces: Vec<(Label, Vec<usize>)> = Vec::new();
     let mut cache: Vec<(Label, Donor)> = Vec::new();
@@ -237,20 +250,28 @@ fn best_move(
             if parts.len() < option.len() {
                 continue;
             }
-            let Some(gain) = try_move(grid, min, r, &parts, before) else {
+            let size: usize = option.iter().map(|(_, c)| c.len()).sum();
+            let assigned = match try_move(grid, min, r, &parts, before) {
+                Some(gain) => Some((
+                    gain,
+                    option
+                        .iter()
+                        .flat_map(|(_, c)| c.iter().map(|&c| (c, r)))
+                        .collect(),
+                )),
+                // a donor that cannot spare the cells may slide over by them (see `push`)
+                None if parts.len() == 1 => push(grid, walls, min, r, parts[0], step, before),
+                None => None,
+            };
+            let Some((gain, cells)) = assigned else {
                 continue;
             };
-            let size: usize = option.iter().map(|(_, c)| c.len()).sum();
             let better = match &best {
                 None => true,
                 Some((g, k, _)) => gain > *g || (gain == *g && size < *k),
             };
             if better {
-                best = Some((
-                    gain,
-                    size,
-                    option.into_iter().flat_map(|(_, c)| c).collect(),
-                ));
+                best = Some((gain, size, cells));
             }
         }
     }
@@ -399,6 +420,114 @@ fn try_shed(
         grid.cells[c] = r;
     }
     verdict
+}
+
+/// Room `r` takes `cells` from donor `d`, which takes as many one step further on from the room
+/// beyond it, `e`: each line of `d` across the face slides by one cell, so a corridor strip
+/// between short rooms and a hub that kept too much moves over rather than narrowing. Every
+/// line must end on the same `e`. Returns the gain and the cells with their new labels.
+fn push(
+    grid: &mut Grid,
+    walls: &Walls,
+    min: &Minimums,
+    r: Label,
+    (d, donor, cells): (Label, &Donor, &[usize]),
+    step: isize,
+    before: &Measure,
+) -> Option<(usize, Vec<(usize, Label)>)> {
+    let w = grid.w;
+    let mut e = None;
+    let mut far = Vec::with_capacity(cells.len());
+    for &x in cells {
+        let mut y = x;
+        while grid.cells[y] == d {
+            y = (y as isize + step) as usize;
+        }
+        let l = grid.cells[y];
+        if l == r
+            || l == OUTSIDE
+            || l == EMPTY
+            || min.fixed[l as usize]
+            || min.region.is_some_and(|g| g[l as usize] != g[d as usize])
+            || *e.get_or_insert(l) != l
+        {
+            return None;
+        }
+        // the cell joining `d` may not share a fixed wall with it
+        if walls.any
+            && [y - 1, y + 1, y - w, y + w]
+                .iter()
+                .any(|&m| grid.cells[m] == d && walls.blocked(y, m))
+        {
+            return None;
+        }
+        far.push(y);
+    }
+    let e = e?;
+    let behind = Donor::new(grid, min, d, e, &donor.before)?;
+    for &x in cells {
+        grid.cells[x] = r;
+    }
+    for &y in &far {
+        grid.cells[y] = d;
+    }
+    let verdict = (|| {
+        let grown = cells.iter().fold(before.bbox, |b, &c| extend(b, c, w));
+        let after_r = measure(grid, r, Some(grown), min)?;
+        if before.worsened_by(&after_r) || after_r.shortfall() >= before.shortfall() {
+            return None;
+        }
+        let moved = far.iter().fold(donor.before.bbox, |b, &c| extend(b, c, w));
+        let after_d = measure(grid, d, Some(moved), min)?;
+        let after_e = measure(grid, e, Some(behind.before.bbox), min)?;
+        if donor.before.worsened_by(&after_d) || behind.before.worsened_by(&after_e) {
+            return None;
+        }
+        let was = before.shortfall() + donor.before.shortfall() + behind.before.shortfall();
+        let now = after_r.shortfall() + after_d.shortfall() + after_e.shortfall();
+        if now >= was {
+            return None;
+        }
+        for (l, bbox, whole) in [
+            (d, after_d.bbox, donor.whole),
+            (e, after_e.bbox, behind.whole),
+        ] {
+            if !connected(grid, l, bbox) || (whole && !blocks_connected(grid, l, bbox)) {
+                return None;
+            }
+        }
+        let all = (
+            donor.both.0.min(behind.both.0),
+            donor.both.1.min(behind.both.1),
+            donor.both.2.max(behind.both.2),
+            donor.both.3.max(behind.both.3),
+        );
+        let all = far.iter().fold(all, |b, &c| extend(b, c, w));
+        if donor
+            .kept
+            .iter()
+            .chain(&behind.kept)
+            .any(|&(a, b)| longest_contact(grid, a, b, all) < min.contact)
+        {
+            return None;
+        }
+        Some(was - now)
+    })();
+    for &y in &far {
+        grid.cells[y] = e;
+    }
+    for &x in cells {
+        grid.cells[x] = d;
+    }
+    let gain = verdict?;
+    Some((
+        gain,
+        cells
+            .iter()
+            .map(|&x| (x, r))
+            .chain(far.iter().map(|&y| (y, d)))
+            .collect(),
+    ))
 }
 
 /// A donor as it stands before any move of this step: its measures, and the contacts of the two
@@ -790,6 +919,44 @@ mod tests {
         );
         assert!(moved >= 1);
         assert!(blocks_connected(&g, 0, (0, 0, 7, 9)));
+    }
+
+    #[test]
+    fn a_strip_between_a_narrow_room_and_a_hall_slides_over() {
+        // room 1 asks 3 cells of clear width; the strip (2) beside it must stay 2 cells wide,
+        // so it cannot give a column, but it can slide into the hall, which has columns to spare
+        let rows = [
+            "##########",
+            "#11220000#",
+            "#11220000#",
+            "#11220000#",
+            "#11220000#",
+            "#11220000#",
+            "#11220000#",
+            "##########",
+        ];
+        let (cells, clear, rule) = ([0, 0, 0], [0, 3, 2], [0, 0, 0]);
+        let (aspect, fixed) = ([0.0, 0.0, 0.0], [false, false, false]);
+        let mut g = parse_rows(&rows);
+        let moved = repair(
+            &mut g,
+            &open(10, 8),
+            &minimums(&cells, &clear, &rule, &aspect, &fixed, &[(0, 2), (2, 1)]),
+        );
+        assert_eq!(moved, 1);
+        assert_eq!(
+            g,
+            parse_rows(&[
+                "##########",
+                "#11122000#",
+                "#11122000#",
+                "#11122000#",
+                "#11122000#",
+                "#11122000#",
+                "#11122000#",
+                "##########",
+            ])
+        );
     }
 
     #[test]

@@ -99,8 +99,12 @@ pub struct SolveOptions {
     /// Once every round is cut, bring rooms up to their nodes' `min_area`, `clear_width` and
     /// `max_aspect` with cells of neighbours that can spare them ([`crate::repair`]).
     pub repair: bool,
-    /// With `repair`: move no cell between the first round's regions (a floor whose walls
-    /// between them the floor above carries as load-bearing walls).
+    /// After each round, bring its rooms toward their targets with the repair's moves
+    /// ([`rebalance_round`]).
+    pub rebalance: bool,
+    /// With `repair` and `rebalance`: move no cell between the first round's regions, and leave
+    /// the first round as cut (a floor whose walls between them the floor above carries as
+    /// load-bearing walls).
     pub keep_first_round: bool,
 }
 
@@ -129,6 +133,7 @@ impl Default for SolveOptions {
             max_backtracks: MAX_BACKTRACKS,
             strict_backtracks: None,
             repair: false,
+            rebalance: false,
             keep_first_round: false,
         }
     }
@@ -806,6 +811,8 @@ pub fn solve_floor(
         let mut growers = Vec::new();
         let mut planned = Vec::new();
         let mut used = 0.0;
+        // each room of the round with its target in cells, for the repair's rebalance
+        let mut round_targets: Vec<(Label, f64)> = Vec::with_capacity(children.len() + 1);
         for (&c, info) in children.iter().zip(&req.children) {
             let seed = &plan.seeds[&floor.names[c as usize]];
             let target = match seed.fraction {
@@ -813,6 +820,7 @@ pub fn solve_floor(
                 None => subtree[c as usize] / total * cells,
             };
             used += target;
+            round_targets.push((c, target));
             // Descendants with seeds of their own grow under the child's label from those seeds,
             // each with its share of the child's target; the child keeps the rest.
             let share = target / subtree[c as usize].max(1e-9);
@@ -835,6 +843,7 @@ pub fn solve_floor(
             planned.push(req.to_solver(seed.centre().unwrap_or_default()));
         }
         let parent_target = (cells - used).max(1.0);
+        round_targets.push((*parent, parent_target));
         let remainder = match plan.parent_seed {
             Some(p) => {
                 growers.push(Grower {
@@ -983,6 +992,16 @@ pub fn solve_floor(
         };
         fallback_used |= outcome.fallback;
         grid = outcome.grid;
+        // with `keep_first_round`, the first round's walls stay where its cut put them
+        if opts.rebalance && !(opts.keep_first_round && t == 0) {
+            rebalance_round(
+                &mut grid,
+                &floor,
+                &round_targets,
+                &has_children,
+                cut_opts.min_contact,
+            );
+        }
         diag.push(RoundOut {
             parent: floor.names[*parent as usize].clone(),
             children: children
@@ -1054,6 +1073,52 @@ pub fn solve_floor(
         seconds: start.elapsed().as_secs_f64(),
     };
     Ok(sol)
+}
+
+/// The repair's pass on one cut round ([`SolveOptions::repair`]): growth stops each child at its
+/// target and the parent keeps what no child reached, so a child whose seed sat among siblings
+/// can end far below its target while the parent (a hub, a wing corridor) holds far more than
+/// its own; the rooms to be cut from that child later share the shortfall. Here each room of the
+/// round counts as short below its target, and takes faces from rooms holding more than theirs
+/// under the repair's rules (no new defect, donors whole, contacts kept); rooms of other rounds
+/// and cores do not change. Rooms no later round cuts keep their proportions (`max_aspect`).
+fn rebalance_round(
+    grid: &mut Grid,
+    floor: &Floor,
+    targets: &[(Label, f64)],
+    parents: &BTreeSet<Label>,
+    contact: u32,
+) {
+    let n = floor.names.len();
+    let mut cells = vec![0usize; n];
+    let mut fixed = vec![true; n];
+    for &(l, t) in targets {
+        if !floor.is_core(l) {
+            cells[l as usize] = t.floor() as usize;
+            fixed[l as usize] = false;
+        }
+    }
+    let clear = vec![0usize; n];
+    let aspect: Vec<f64> = (0..n)
+        .map(|l| {
+            if parents.contains(&(l as Label)) {
+                0.0
+            } else {
+                floor.aspect[l]
+            }
+        })
+        .collect();
+    let min = repair::Minimums {
+        cells: &cells,
+        clear: &clear,
+        rule: &floor.widths,
+        aspect: &aspect,
+        fixed: &fixed,
+        edges: &floor.edges,
+        region: None,
+        contact,
+    };
+    repair::repair(grid, &floor.walls, &min);
 }
 
 /// Vectorise the final grid and measure the realised adjacencies.

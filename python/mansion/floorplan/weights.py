@@ -112,14 +112,20 @@ class SolverSettings(BaseModel):
       winner is kept when the children's total shortfall falls and their rooms are no more
       elongated or jagged. 0: never, the paper's cutting node (given seeds stay where given).
     - ``repair``: once every round is cut, rooms left below their node's ``min_area``,
-      ``clear_width`` or ``max_aspect`` take a row or a column at a time (from one neighbour,
-      one straight run of it, or the whole face across neighbours) when their shortfall and
-      the rooms' total fall and no room gains a defect (below area or width, elongated, a
-      sliver, no usable square), every donor stays in one piece, and every realised edge and
-      exterior wall is kept; False: the paper's solver. Generated floors turn it on.
-    - ``keep_first_round`` (with ``repair``): cells move only within one of the first round's
-      regions, so the walls between them stay where the cut put them (generated floors whose
-      walls the floor above carries as load-bearing walls).
+      ``clear_width`` or ``max_aspect`` take a row or a column at a time from neighbours (one
+      neighbour, one straight run of it, the whole face across several, or a neighbour that
+      slides over into the room beyond it), or hand a strip narrower than their clear width to
+      one. A move is taken when the room's shortfall and the rooms' total fall and no room
+      gains a defect (below area or width, elongated, a sliver, no usable square) or more cells
+      under its width rule, every donor stays in one piece without a one-cell neck, and every
+      realised edge and exterior wall is kept; False: the paper's solver. Generated floors turn
+      it on.
+    - ``rebalance``: after each round, its rooms below their targets take rows and columns from
+      rooms of the round above theirs by the same moves and rules (a child seeded among
+      siblings no longer leaves the parent holding its share). Generated floors turn it on.
+    - ``keep_first_round`` (with ``repair`` and ``rebalance``): the first round stays as cut and cells move only
+      within one of its regions, so the walls between them stay where the cut put them
+      (generated floors whose walls the floor above carries as load-bearing walls).
 
     How the defaults were chosen (``mansion eval floorplan`` on the T2D development plans, even
     ids, hierarchical mode, micro / macro IoU; and the solver's own benchmark, whose seeds come
@@ -159,6 +165,7 @@ class SolverSettings(BaseModel):
     growth: Literal["balanced", "longest"] = "balanced"
     reseeds: int = Field(default=0, ge=0)
     repair: bool = False
+    rebalance: bool = False
     keep_first_round: bool = False
 
     @model_validator(mode="after")
