@@ -208,6 +208,57 @@ def test_load_bearing_walls_are_kept_by_the_floor_above() -> None:
             assert all(l != r for l, r in _cells_across(below.layout, a, c))
 
 
+def _bay_graph(min_area: float):  # type: ignore[no-untyped-def]
+    """A hub with two first-round bays; the second holds a corridor with three offices."""
+    from mansion.models import RoomGraph
+
+    def node(i: str, kind: str, area: float, room_type: str, lo: float | None = None) -> dict:
+        return {"id": i, "type": kind, "area": area, "room_type": room_type, "min_area": lo}
+
+    nodes = [
+        node("hall", "main", 30.0, "corridor"),
+        node("bay_1", "area", 40.0, "open_office", 30.0),
+        node("bay_2", "area", 12.0, "corridor", 4.0),
+        *(node(f"office_{k}", "area", 18.0, "office", min_area) for k in (1, 2, 3)),
+    ]
+    edges = [
+        {"source": "hall", "target": "bay_1"}, {"source": "hall", "target": "bay_2"},
+        *({"source": "bay_2", "target": f"office_{k}"} for k in (1, 2, 3)),
+    ]
+    return RoomGraph.model_validate({"nodes": nodes, "edges": edges})
+
+
+def test_retargeted_first_round_keeps_every_room_at_its_minimum() -> None:
+    from mansion.building.load_bearing import retarget_first_round
+
+    graph = _bay_graph(8.0)
+    # the bay below holds 40 m²: the offices keep 8 m² each, the corridor its 4, the rest shared
+    fitted, notes = retarget_first_round(graph, {"hall": 30.0, "bay_1": 40.0, "bay_2": 40.0})
+    areas = {n.id: n.area for n in fitted.nodes}
+    assert not notes
+    assert all(areas[n.id] >= (n.min_area or 0.0) - 1e-9 for n in fitted.nodes)
+    assert sum(areas[k] for k in ("bay_2", "office_1", "office_2", "office_3")) == pytest.approx(40.0)
+    # the minimums take 28 m²; the other 12 go in proportion to what each was planned above its
+    # minimum (offices 10 m² each, the corridor 8)
+    assert areas["office_1"] == pytest.approx(8.0 + 10.0 * 12.0 / 38.0)
+    assert areas["bay_2"] == pytest.approx(4.0 + 8.0 * 12.0 / 38.0)
+
+
+def test_a_first_round_region_too_small_loses_rooms_not_minimums() -> None:
+    from mansion.building.load_bearing import retarget_first_round
+
+    graph = _bay_graph(8.0)
+    # 20 m² below: the corridor's 4 and two offices' 16 fit, the third office is left out
+    fitted, notes = retarget_first_round(graph, {"hall": 30.0, "bay_1": 40.0, "bay_2": 20.0})
+    ids = {n.id for n in fitted.nodes}
+    assert ids == {"hall", "bay_1", "bay_2", "office_2", "office_3"}
+    assert len(notes) == 1 and notes[0].startswith("office_1 left out: bay_2's region")
+    assert all(n.area >= (n.min_area or 0.0) - 1e-9 for n in fitted.nodes)
+    assert {frozenset((e.source, e.target)) for e in fitted.edges} == {
+        frozenset(p) for p in [("hall", "bay_1"), ("hall", "bay_2"), ("bay_2", "office_2"), ("bay_2", "office_3")]
+    }
+
+
 def test_load_bearing_off_for_public_buildings() -> None:
     b = generate_building("a three-storey library", seed=0)
     assert not b.program.load_bearing_walls

@@ -23,6 +23,7 @@ from shapely.ops import linemerge, polylabel, unary_union
 
 from mansion.floorplan.seeds import ChildSeed, SeedPlan, SeedPlanner, SeedRequest
 from mansion.models import FloorLayout, Footprint, RoomGraph
+from mansion.models.graph import RoomNode
 from mansion.models.footprint import Point
 
 __all__ = [
@@ -153,25 +154,84 @@ def _row_runs(mask: np.ndarray, ox: float, oy: float, s: float) -> list[Polygon]
     return out
 
 
-def retarget_first_round(graph: RoomGraph, areas: dict[str, float]) -> RoomGraph:
-    """Scale each first-round subtree of ``graph`` (and the hub) so that it covers the area the
-    same room's region had on the floor below."""
+def retarget_first_round(graph: RoomGraph, areas: dict[str, float]) -> tuple[RoomGraph, list[str]]:
+    """Fit each first-round subtree of ``graph`` (and the hub) to the area the same room's region
+    had on the floor below, never below a room's ``min_area``: each room keeps its minimum and
+    the rest of the region is shared in proportion to what the room was planned above it. A
+    region too small for its rooms' minimums loses rooms first, repeated ones (a room type the
+    floor has more of) before single ones, smaller before larger, each a leaf of the graph so the
+    rest stays connected. Returns the graph and a relaxation note per region that lost rooms."""
+    notes: list[str] = []
+    while True:
+        groups = first_round_groups(graph)
+        members: dict[str, list[RoomNode]] = {}
+        for node in graph.nodes:
+            if node.id in groups:
+                members.setdefault(groups[node.id], []).append(node)
+        short = [
+            grp for grp, nodes in members.items()
+            if grp in areas and sum(n.min_area or 0.0 for n in nodes) > areas[grp] + 1e-9
+        ]
+        if not short:
+            break
+        dropped = []
+        for grp in sorted(short):
+            leaf = _droppable(graph, members[grp], grp)
+            if leaf is not None:
+                dropped.append(leaf.id)
+                notes.append(
+                    f"{leaf.id} left out: {grp}'s region on the floor below holds {areas[grp]:.1f} m², "
+                    f"less than its rooms' minimums"
+                )
+        if not dropped:
+            break  # nothing left to drop: the rooms share the region as planned
+        graph = RoomGraph(
+            nodes=[n for n in graph.nodes if n.id not in dropped],
+            edges=[e for e in graph.edges if e.source not in dropped and e.target not in dropped],
+        )
     groups = first_round_groups(graph)
-    totals: dict[str, float] = {}
+    totals: dict[str, tuple[float, float]] = {}
     for node in graph.nodes:
         if node.id in groups:
-            totals[groups[node.id]] = totals.get(groups[node.id], 0.0) + node.area
+            area, floor = totals.get(groups[node.id], (0.0, 0.0))
+            totals[groups[node.id]] = (area + node.area, floor + _floor_of(node))
     nodes = []
     for node in graph.nodes:
         grp = groups.get(node.id)
-        if grp is not None and grp in areas and totals[grp] > 0:
+        if grp is not None and grp in areas and totals[grp][0] > 0:
+            area, floor = totals[grp]
             if grp == node.id and node.id == graph.hub.id:
                 new_area = areas[grp]
+            elif areas[grp] >= floor and area > floor:
+                # the minimums first, the rest in proportion to what each was planned above its own
+                new_area = _floor_of(node) + (node.area - _floor_of(node)) * (areas[grp] - floor) / (area - floor)
             else:
-                new_area = node.area * areas[grp] / totals[grp]
+                new_area = node.area * areas[grp] / area
             node = node.model_copy(update={"area": new_area})
         nodes.append(node)
-    return RoomGraph(nodes=nodes, edges=graph.edges)
+    return RoomGraph(nodes=nodes, edges=graph.edges), notes
+
+
+def _floor_of(node: RoomNode) -> float:
+    """The part of a node's planned area it must keep: its minimum, at most its plan."""
+    return min(node.min_area or 0.0, node.area)
+
+
+def _droppable(graph: RoomGraph, nodes: list[RoomNode], root: str) -> RoomNode | None:
+    """The room of a first-round subtree to leave out first, or None: a leaf of the graph (one
+    neighbour, no core), not the subtree's root; repeated types first, then the smallest."""
+    cores = {n.id for n in graph.nodes if n.is_core}
+    kinds: dict[str, int] = {}
+    for n in graph.nodes:
+        kinds[n.room_type or n.id] = kinds.get(n.room_type or n.id, 0) + 1
+    leaves = [
+        n for n in nodes
+        if n.id != root and not n.is_core and len(set(graph.neighbours(n.id))) == 1
+        and not set(graph.neighbours(n.id)) & cores
+    ]
+    if not leaves:
+        return None
+    return min(leaves, key=lambda n: (kinds[n.room_type or n.id] == 1, n.area, n.id))
 
 
 class SkeletonSeedPlanner:

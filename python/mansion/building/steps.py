@@ -252,6 +252,7 @@ def solve_building_floor(
     fp = floor_footprint(program, index)
     planner = seed_planner
     text_planner = None
+    left_out: list[str] = []
     if planner is None and description:
         # the description's position words ("the kitchen in the north-east corner") seed the
         # rooms they name; a floor they do not mention keeps the solver's heuristic
@@ -267,7 +268,7 @@ def solve_building_floor(
             ours = {g for g in first_round_groups(graph).values()}
             # Same first round as below: match its areas and seed it in the same places.
             if ours == set(regions):
-                graph = retarget_first_round(graph, {k: a for k, (a, _) in regions.items()})
+                graph, left_out = retarget_first_round(graph, {k: a for k, (a, _) in regions.items()})
                 planner = SkeletonSeedPlanner(
                     graph.hub.id, {k: p for k, (_, p) in regions.items()}, rest=seed_planner
                 )
@@ -286,7 +287,7 @@ def solve_building_floor(
     return Floor(
         index=index, graph=graph, footprint=fp, layout=layout,
         room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
-        relaxations=[*floor_program.relaxations, *relax],
+        relaxations=[*floor_program.relaxations, *left_out, *relax],
         carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
         position_words=words,
     )
