@@ -112,6 +112,19 @@ def test_summarise_counts_each_measure() -> None:
     assert f.sliver_pct == pytest.approx(25.0)
 
 
+
+def test_a_room_with_exactly_a_tenth_of_it_narrow_is_not_flagged() -> None:
+    # a generated guest room: 2.5 of its 25 m² lie where no 3.3 m square reaches (a 1.5 m nub and
+    # a 0.5 m step); the share comes out a hair over a tenth in floating point, which is not
+    # "more than 10 %"
+    room = Polygon([(10.5, 2), (12, 2), (12, 5.5), (12.5, 5.5), (12.5, 7.5), (7, 7.5), (7, 3), (10.5, 3)])
+    assert room.area == pytest.approx(25.0)
+    f = summarise([RoomRecord("hotel", "guest_room", room)], buildings=1)
+    assert f.below_width == 0 and f.below_area == 0
+    # a nub half a metre longer is narrow beyond the tenth, and the room is flagged
+    nub = Polygon([(10.5, 1.5), (12, 1.5), (12, 5.5), (12.5, 5.5), (12.5, 7.5), (7, 7.5), (7, 3), (10.5, 3)])
+    assert summarise([RoomRecord("hotel", "guest_room", nub)], buildings=1).below_width == 1
+
 # -- the design table ----------------------------------------------------------------------------
 
 

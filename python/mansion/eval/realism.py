@@ -68,6 +68,9 @@ NARROW = 1.0
 DOOR_WIDTH = 0.9
 #: Share of a room's area that may be narrower than a limit before the room is flagged.
 TOLERANCE = 0.10
+#: Rounding noise of the areas compared with :data:`TOLERANCE`: a room with exactly a tenth of
+#: its area narrow (2 cells of 20) is not "more than 10 %".
+_SHARE_EPS = 1e-9
 #: Longest bounding box side over the shortest above which a non-circulation room is elongated.
 MAX_BOX_ASPECT = ELONGATED_ASPECT
 #: Metres per pixel of the T2D (RPLAN) 256 images.
@@ -144,7 +147,7 @@ def clear_width(shape: BaseGeometry, tolerance: float = TOLERANCE) -> float:
     lo, hi = 0.0, 2.0 * (shape.bounds[2] - shape.bounds[0] + shape.bounds[3] - shape.bounds[1])
     while hi - lo > 0.01:
         mid = (lo + hi) / 2
-        if narrow_share(shape, mid) <= tolerance:
+        if narrow_share(shape, mid) <= tolerance + _SHARE_EPS:
             lo = mid
         else:
             hi = mid
@@ -285,7 +288,7 @@ def summarise(rooms: Iterable[RoomRecord], buildings: int = 0, narrow: float = N
         key = design_key(r.room_type) or r.room_type
         shape = r.polygon
         f.rooms += 1
-        if narrow_share(shape, narrow, inclusive=True) > TOLERANCE:
+        if narrow_share(shape, narrow, inclusive=True) > TOLERANCE + _SHARE_EPS:
             f.sliver += 1
             slivers[key] += 1
         if not d.circulation:
@@ -295,7 +298,7 @@ def summarise(rooms: Iterable[RoomRecord], buildings: int = 0, narrow: float = N
             f.no_square += 1
         need = corridor_width(r.building_type) if d.circulation and r.building_type != "t2d" else d.min_width
         small = shape.area < d.min_area - _EPS
-        thin = narrow_share(shape, need) > TOLERANCE
+        thin = narrow_share(shape, need) > TOLERANCE + _SHARE_EPS
         f.below_area += small
         f.below_width += thin
         if small or thin:
