@@ -259,6 +259,98 @@ def test_a_first_round_region_too_small_loses_rooms_not_minimums() -> None:
     }
 
 
+def _ward_graph():  # type: ignore[no-untyped-def]
+    """A corridor with three wards (the first two with an ensuite), a nurse station and a
+    stair."""
+    from mansion.models import RoomGraph
+
+    def node(i: str, kind: str, room_type: str, lo: float | None) -> dict:
+        return {"id": i, "type": kind, "area": 20.0, "room_type": room_type, "min_area": lo}
+
+    nodes = [
+        node("corridor", "main", "corridor", 4.0),
+        *(node(f"ward_{k}", "area", "ward", 14.5) for k in (1, 2, 3)),
+        *(node(f"ward_{k}_ensuite", "area", "ensuite", 3.0) for k in (1, 2)),
+        node("nurse_station", "area", "nurse_station", 6.0),
+        {"id": "stair_1", "type": "stair", "area": 18.0},
+    ]
+    edges = [
+        *({"source": "corridor", "target": t} for t in ("ward_1", "ward_2", "ward_3", "nurse_station", "stair_1")),
+        *({"source": f"ward_{k}", "target": f"ward_{k}_ensuite"} for k in (1, 2)),
+    ]
+    return RoomGraph.model_validate({"nodes": nodes, "edges": edges})
+
+
+def test_unfit_rooms_are_those_below_their_minimum_or_without_a_usable_square() -> None:
+    from mansion.building.steps import unfit_rooms
+    from mansion.models.layout import LayoutRoom
+
+    def room(i: str, x0: float, y0: float, x1: float, y1: float, kind: str = "area") -> LayoutRoom:
+        poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+        area = (x1 - x0) * (y1 - y0)
+        return LayoutRoom(
+            id=i, room_type=i.split("_")[0], type=kind, polygon=poly, area=area, target_area=area,
+            centroid=((x0 + x1) / 2, (y0 + y1) / 2),
+        )
+
+    rooms = [
+        room("corridor", 0, 0, 20, 2, "main"),
+        room("ward_1", 0, 2, 4, 7),  # 20 m²: fits
+        room("ward_2", 4, 2, 7, 6),  # 12 m² < 14.5
+        room("ward_3", 7, 2, 8, 22),  # 20 m², but 1 m wide: no usable square
+        room("nurse_station", 8, 2, 11, 4),  # 6 m²: exactly its minimum
+        room("stair_1", 11, 2, 14, 8, "stair"),  # a core, 18 m², never unfit
+    ]
+    unfit = unfit_rooms(rooms, _ward_graph())
+    assert set(unfit) == {"ward_2", "ward_3"}
+    assert unfit["ward_2"] == "laid out at 12.0 m², below its 14.5 m² minimum"
+    assert unfit["ward_3"] == "laid out with no usable 1 m square"
+
+
+def test_leave_out_drops_repeated_rooms_with_their_own_rooms_never_the_last_of_a_type() -> None:
+    from mansion.building.steps import leave_out
+
+    graph = _ward_graph()
+    why = "laid out at 9.0 m², below its 14.5 m² minimum"
+    unfit = {k: why for k in ("ward_1", "ward_2", "ward_3", "nurse_station", "corridor", "stair_1")}
+    fewer, notes = leave_out(graph, unfit)
+    ids = {n.id for n in fewer.nodes}
+    # two wards go, ward_1 and ward_2 with their ensuites; ward_3 is the last ward and stays, as
+    # do the single nurse station, the hub and the core
+    assert ids == {"corridor", "ward_3", "nurse_station", "stair_1"}
+    assert notes == [f"ward_1 left out (with ward_1_ensuite): {why}", f"ward_2 left out (with ward_2_ensuite): {why}"]
+    assert all(e.source in ids and e.target in ids for e in fewer.edges)
+    fewer.check()
+    # nothing to leave out: the same graph
+    same, notes = leave_out(graph, {"nurse_station": why})
+    assert same is graph and notes == []
+
+
+def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> None:
+    """Generated floors record each room left out, and the rooms named are gone from the graph
+    and the layout; the floors that lost rooms hold fewer unfit rooms than the same building
+    laid out without leaving any out."""
+    from mansion.building import steps
+
+    def unfit(b: Building) -> int:
+        return sum(len(steps.unfit_rooms(f.layout.rooms, f.graph)) for f in b.floors if f.copy_of is None)
+
+    b = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=6)
+    notes = [r for f in b.floors for r in f.relaxations if " left out" in r]
+    assert notes, "the hospital of seed 6 has a floor too tight for its wards"
+    for f in b.floors:
+        ids = {n.id for n in f.graph.nodes}
+        for note in f.relaxations:
+            if " left out" in note:
+                room = note.split(" left out")[0]
+                assert room not in ids and room not in {r.id for r in f.layout.rooms}
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "leave_out", lambda graph, unfit: (graph, []))
+        kept = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=6)
+    assert not [r for f in kept.floors for r in f.relaxations if "laid out" in r]
+    assert unfit(b) < unfit(kept)
+
+
 def test_load_bearing_off_for_public_buildings() -> None:
     b = generate_building("a three-storey library", seed=0)
     assert not b.program.load_bearing_walls
