@@ -186,6 +186,19 @@ def test_fit_minimums_never_goes_below_a_minimum() -> None:
     assert all(a == pytest.approx(min_target("bedroom")) for a in areas)
 
 
+def test_no_room_is_planned_too_small_to_hold_a_usable_square() -> None:
+    from mansion.planning.program import AREA_MARGIN, USABLE_AREA, min_target
+
+    # a WC compartment at the table's 0.9 m × 1.5 m holds no square over 1 m; on the 0.5 m grid
+    # the smallest room that does is 1.5 m × 1.5 m, and every room is planned from at least that
+    assert not fits_square(box(0, 0, 0.9, 1.5), 1.0, inclusive=True)
+    side = math.sqrt(USABLE_AREA)
+    assert fits_square(box(0, 0, side, side), 1.0, inclusive=True)
+    assert room_design("wc").min_area < USABLE_AREA
+    for room_type in ROOM_DESIGN:
+        assert min_target(room_type) >= AREA_MARGIN * max(USABLE_AREA, room_design(room_type).min_area) - 1e-9
+
+
 @pytest.mark.parametrize("seed", range(14))
 def test_planned_rooms_respect_the_table(seed: int) -> None:
     kind, floors, text = bench_case(seed)
