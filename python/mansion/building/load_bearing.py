@@ -29,6 +29,7 @@ from mansion.models.footprint import Point
 __all__ = [
     "SkeletonSeedPlanner",
     "carry_walls",
+    "cut_parents",
     "first_round_groups",
     "first_round_regions",
     "first_round_walls",
@@ -38,22 +39,33 @@ __all__ = [
 Segment = tuple[Point, Point]
 
 
-def first_round_groups(graph: RoomGraph) -> dict[str, str]:
-    """Room id → the first-round room whose region it was cut from (the hub maps to itself).
-
-    Follows the solver's cut rounds: a breadth-first search from the hub, cores never parents.
-    """
+def cut_parents(graph: RoomGraph) -> dict[str, str]:
+    """Room id → the room whose region it is cut from, following the solver's cut rounds: a
+    breadth-first search from the hub, cores never parents. The hub and the cores have none."""
     hub = graph.hub.id
     cores = {n.id for n in graph.nodes if n.is_core}
-    group = {hub: hub}
+    parent: dict[str, str] = {}
+    seen = {hub}
     queue = deque([hub])
     while queue:
-        parent = queue.popleft()
-        for child in graph.neighbours(parent):
-            if child in group or child in cores:
+        room = queue.popleft()
+        for child in graph.neighbours(room):
+            if child in seen or child in cores:
                 continue
-            group[child] = child if parent == hub else group[parent]
+            seen.add(child)
+            parent[child] = room
             queue.append(child)
+    return parent
+
+
+def first_round_groups(graph: RoomGraph) -> dict[str, str]:
+    """Room id → the first-round room whose region it was cut from (the hub maps to itself),
+    along :func:`cut_parents`."""
+    hub = graph.hub.id
+    group = {hub: hub}
+    # cut_parents lists rooms in breadth-first order, so a parent's group is known first
+    for child, parent in cut_parents(graph).items():
+        group[child] = child if parent == hub else group[parent]
     return group
 
 

@@ -33,6 +33,7 @@ from mansion.building.checks import check_building
 from mansion.building.load_bearing import (
     SkeletonSeedPlanner,
     carry_walls,
+    cut_parents,
     first_round_groups,
     first_round_regions,
     first_round_walls,
@@ -44,6 +45,7 @@ from mansion.models import Core, FloorLayout, Footprint, RoomGraph
 from mansion.models.layout import LayoutRoom
 from mansion.models.building import Building, BuildingProgram, Floor, Palette, PositionWord, RoomCard
 from mansion.models.room_design import ELONGATED_ASPECT, room_design
+from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, box_aspect, fits_square, narrow_share
 
 __all__ = [
     "ATTEMPTS",
@@ -245,9 +247,9 @@ def unfit_rooms(rooms: Iterable[LayoutRoom], graph: RoomGraph) -> dict[str, str]
         if room.is_core or node is None:
             continue
         shape = Polygon(room.polygon, room.holes)
-        if node.min_area is not None and shape.area < node.min_area - 1e-3:
+        if node.min_area is not None and shape.area < node.min_area - EPS:
             out[room.id] = f"laid out at {shape.area:.1f} m², below its {node.min_area:g} m² minimum"
-        elif shape.buffer(-(USABLE_SIDE / 2 + 1e-3), join_style="mitre").is_empty:
+        elif not fits_square(shape, USABLE_SIDE, inclusive=True):
             out[room.id] = f"laid out with no usable {USABLE_SIDE:g} m square"
     return out
 
@@ -257,33 +259,14 @@ def misshapen(rooms: Iterable[LayoutRoom]) -> tuple[int, int]:
     than circulation whose box is longer than :data:`ELONGATED_ASPECT` times its width, and rooms
     with more than a tenth of their area in parts :data:`USABLE_SIDE` wide or narrower."""
     elongated = slivers = 0
-    half = USABLE_SIDE / 2 + 1e-3
     for room in rooms:
         if room.is_core:
             continue
         shape = Polygon(room.polygon, room.holes)
-        x0, y0, x1, y1 = shape.bounds
-        short = min(x1 - x0, y1 - y0)
         if not room_design(room.room_type).circulation:
-            elongated += short <= 0 or max(x1 - x0, y1 - y0) / short > ELONGATED_ASPECT
-        opened = shape.buffer(-half, join_style="mitre").buffer(half, join_style="mitre")
-        slivers += shape.area > 0 and 1.0 - opened.intersection(shape).area / shape.area > 0.1 + 1e-9
+            elongated += box_aspect(shape) > ELONGATED_ASPECT
+        slivers += narrow_share(shape, USABLE_SIDE, inclusive=True) > TOLERANCE + SHARE_EPS
     return elongated, slivers
-
-
-def _cut_tree(graph: RoomGraph) -> dict[str, str]:
-    """Room id → the room its region is cut from (the solver's rounds: breadth first from the
-    hub, cores never parents); the hub has none."""
-    cores = {n.id for n in graph.nodes if n.is_core}
-    parent: dict[str, str] = {}
-    seen, queue = {graph.hub.id}, [graph.hub.id]
-    for room in queue:
-        for child in graph.neighbours(room):
-            if child not in seen and child not in cores:
-                seen.add(child)
-                parent[child] = room
-                queue.append(child)
-    return parent
 
 
 def leave_out(graph: RoomGraph, unfit: dict[str, str]) -> tuple[RoomGraph, list[str]]:
@@ -292,7 +275,7 @@ def leave_out(graph: RoomGraph, unfit: dict[str, str]) -> tuple[RoomGraph, list[
     relaxation note per room: only a room of a type the floor has more of (a ward, a guest room,
     a toilet of a block; one of each type stays), that is neither the hub, a core nor
     circulation, and whose rooms are at most three."""
-    parent = _cut_tree(graph)
+    parent = cut_parents(graph)
     children: dict[str, list[str]] = {}
     for room, up in parent.items():
         children.setdefault(up, []).append(room)

@@ -43,6 +43,14 @@ from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError
 from mansion.models.building import Building
 from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, design_key, room_design
+from mansion.models.room_shape import (
+    EPS as _EPS,
+    SHARE_EPS as _SHARE_EPS,
+    TOLERANCE,
+    box_aspect,
+    fits_square,
+    narrow_share,
+)
 
 __all__ = [
     "BENCH_TYPES",
@@ -66,11 +74,6 @@ __all__ = [
 NARROW = 1.0
 #: Shared wall two rooms need for a door between them, metres.
 DOOR_WIDTH = 0.9
-#: Share of a room's area that may be narrower than a limit before the room is flagged.
-TOLERANCE = 0.10
-#: Rounding noise of the areas compared with :data:`TOLERANCE`: a room with exactly a tenth of
-#: its area narrow (2 cells of 20) is not "more than 10 %".
-_SHARE_EPS = 1e-9
 #: Longest bounding box side over the shortest above which a non-circulation room is elongated.
 MAX_BOX_ASPECT = ELONGATED_ASPECT
 #: Metres per pixel of the T2D (RPLAN) 256 images.
@@ -84,8 +87,6 @@ BENCH_TYPES = (
     "studio", "family_apartment", "townhouse", "villa", "apartment_block", "office", "hospital",
     "school", "kindergarten", "supermarket", "library", "restaurant", "hotel", "shopping_mall",
 )
-
-_EPS = 1e-3  # 1 mm: a room exactly 1 m wide holds a 1 m square
 
 
 def bench_case(seed: int) -> tuple[str, int, str]:
@@ -102,41 +103,6 @@ def bench_case(seed: int) -> tuple[str, int, str]:
 
 
 # -- measures on one polygon ---------------------------------------------------------------------
-
-
-def _half(width: float, inclusive: bool) -> float:
-    """Half of ``width``, a millimetre over when parts exactly ``width`` wide count as narrow
-    (``inclusive``), a millimetre under when they do not."""
-    return width / 2 + (_EPS if inclusive else -_EPS)
-
-
-def _opening(shape: BaseGeometry, width: float, inclusive: bool = False) -> BaseGeometry:
-    """Morphological opening with a ``width`` square: what of ``shape`` a square of that side,
-    moved around inside it, can cover (mitred buffers keep orthogonal corners square)."""
-    r = _half(width, inclusive)
-    return shape.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
-
-
-def narrow_share(shape: BaseGeometry, width: float, inclusive: bool = False) -> float:
-    """Share of ``shape``'s area in parts narrower than ``width`` (``inclusive``: or exactly
-    that wide); 0 for an empty shape."""
-    if shape.area <= 0:
-        return 0.0
-    kept = _opening(shape, width, inclusive).intersection(shape).area
-    return max(0.0, 1.0 - kept / shape.area)
-
-
-def fits_square(shape: BaseGeometry, side: float, inclusive: bool = False) -> bool:
-    """True when a ``side`` × ``side`` axis-aligned square (``inclusive``: a hair larger) fits
-    inside ``shape``."""
-    return not shape.buffer(-_half(side, inclusive), join_style="mitre").is_empty
-
-
-def box_aspect(shape: BaseGeometry) -> float:
-    """Longest side of the axis-aligned bounding box over its shortest."""
-    x0, y0, x1, y1 = shape.bounds
-    short = min(x1 - x0, y1 - y0)
-    return float("inf") if short <= 0 else max(x1 - x0, y1 - y0) / short
 
 
 def clear_width(shape: BaseGeometry, tolerance: float = TOLERANCE) -> float:
