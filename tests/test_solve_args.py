@@ -37,6 +37,7 @@ def test_default_options_match_the_binding_contract() -> None:
         "refine_walls": True,
         "growth": "balanced",
         "reseeds": 0,
+        "slabs": False,
         "repair": False,
         "rebalance": False,
         "keep_first_round": False,

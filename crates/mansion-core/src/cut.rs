@@ -40,6 +40,30 @@ pub struct RoundSpec {
     pub names: Vec<String>,
 }
 
+/// A round whose parent, label 0, keeps the leftover (`parent_target` cells) and is cut into
+/// children 1, 2, … of `target` cells each, seeded at `planned`; `names` from the parent on.
+/// Every label is final. For unit tests across the crate.
+#[cfg(test)]
+pub fn leftover_round(
+    target: f64,
+    planned: Vec<[f64; 2]>,
+    parent_target: f64,
+    required: Vec<(Label, Label)>,
+    names: &[&str],
+) -> RoundSpec {
+    let n = planned.len() as Label;
+    RoundSpec {
+        parent: 0,
+        growers: (1..=n).map(|label| Grower { label, target }).collect(),
+        planned,
+        remainder: Some((0, parent_target)),
+        reserved: vec![],
+        final_labels: (0..=n).collect(),
+        required,
+        names: names.iter().map(|s| s.to_string()).collect(),
+    }
+}
+
 /// Sampling and scoring settings of the cutting node.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct CutOptions {
@@ -78,6 +102,14 @@ pub struct CutOptions {
     /// tenth of a retry's candidates ([`RESEED_DIVISOR`]). 0: never, the paper's cutting node.
     #[serde(default)]
     pub reseeds: usize,
+    /// Try the corridor typology ([`crate::slab`]) beside the grown candidates in a round whose
+    /// parent keeps the leftover. Absent: off, the paper's cutting node.
+    #[serde(default)]
+    pub slabs: bool,
+    /// Each label's clear width in cells, for the slab layouts (indexed by label; 0 or a label
+    /// past the end: none).
+    #[serde(default)]
+    pub clear: Vec<usize>,
 }
 
 use serde::{Deserialize, Serialize};
@@ -102,6 +134,8 @@ impl Default for CutOptions {
             growth: GrowthRule::default(),
             refine_walls: false,
             reseeds: 0,
+            slabs: false,
+            clear: Vec::new(),
         }
     }
 }
@@ -815,6 +849,33 @@ pub fn cut(
             energy,
         }
     };
+    // the corridor typology's layouts, finished like any candidate; the best survivor competes
+    // with each retry's best by energy
+    let slab: Option<Survivor> = if opts.slabs {
+        let mut s = Scratch::new(p.base.cells.len());
+        let mut best: Option<Survivor> = None;
+        for (i, g) in crate::slab::layouts(&p, &opts.clear)
+            .into_iter()
+            .enumerate()
+        {
+            candidates += 1;
+            match p.finish(g, &mut s) {
+                // ties go to the grown candidates, and among slabs to the first
+                Ok((e, g, f)) if best.as_ref().is_none_or(|b| e < b.0) => {
+                    best = Some((e, usize::MAX - i, g, f));
+                }
+                Ok(_) => {}
+                Err(why) => *rejected.entry(why.describe(&spec.names)).or_insert(0) += 1,
+            }
+        }
+        best
+    } else {
+        None
+    };
+    let with_slab = |b: Survivor| match &slab {
+        Some(s) if s.0 < b.0 => s.clone(),
+        _ => b,
+    };
     let mut kept: Option<(Survivor, usize)> = None;
     for j in 0..opts.retries.max(1) {
         let radii = p.radii(j);
@@ -827,7 +888,7 @@ pub fn cut(
             }
         });
         candidates += opts.batch.max(1);
-        if let Some(b) = best {
+        if let Some(b) = best.map(with_slab) {
             if !opts.exhaustive {
                 return Ok(finish(b, Some(j), candidates, rejected));
             }
@@ -838,6 +899,9 @@ pub fn cut(
     }
     if let Some((b, j)) = kept {
         return Ok(finish(b, Some(j), candidates, rejected));
+    }
+    if let Some(b) = slab {
+        return Ok(finish(b, Some(0), candidates, rejected));
     }
     // Monte Carlo fallback, in batches so memory stays bounded
     let mut done = 0;
@@ -1097,21 +1161,8 @@ mod tests {
         // re-seeding the winner's children fall short by no more, and some round changes
         let base = parse_rows(&["000000000000000000000000000000"; 4]);
         let walls = Walls::none(base.w, base.h);
-        let spec = RoundSpec {
-            parent: 0,
-            growers: (1..=3)
-                .map(|label| Grower {
-                    label,
-                    target: 30.0,
-                })
-                .collect(),
-            planned: vec![[3.5, 2.5], [5.5, 2.5], [7.5, 2.5]],
-            remainder: Some((0, 30.0)),
-            reserved: vec![],
-            final_labels: vec![0, 1, 2, 3],
-            required: vec![],
-            names: vec!["p".into(), "a".into(), "b".into(), "c".into()],
-        };
+        let planned = vec![[3.5, 2.5], [5.5, 2.5], [7.5, 2.5]];
+        let spec = leftover_round(30.0, planned, 30.0, vec![], &["p", "a", "b", "c"]);
         let mut moved = 0;
         for rng_seed in 0..6 {
             let run = |reseeds: usize| {

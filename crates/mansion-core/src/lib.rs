@@ -18,6 +18,7 @@ pub mod raster;
 pub mod region;
 pub mod repair;
 pub mod seedplan;
+pub mod slab;
 pub mod solve;
 pub mod topology;
 pub mod vectorise;

@@ -87,6 +87,9 @@ pub struct SolveOptions {
     pub refine_walls: bool,
     /// See [`CutOptions::reseeds`].
     pub reseeds: usize,
+    /// See [`CutOptions::slabs`].
+    #[serde(default)]
+    pub slabs: bool,
     /// Times a failed round may send the solver back to re-cut an earlier one, per floor
     /// ([`MAX_BACKTRACKS`] by default). A budget in counts, not time, so results stay
     /// deterministic: generated buildings give their strict first attempt a small one, since a
@@ -130,6 +133,7 @@ impl Default for SolveOptions {
             growth: c.growth,
             refine_walls: true,
             reseeds: 0,
+            slabs: false,
             max_backtracks: MAX_BACKTRACKS,
             strict_backtracks: None,
             repair: false,
@@ -700,6 +704,8 @@ pub fn solve_floor(
         growth: opts.growth,
         refine_walls: opts.refine_walls,
         reseeds: opts.reseeds,
+        slabs: opts.slabs,
+        clear: floor.clear.clone(),
     };
     let mut grid = floor.grid.clone();
     let mut exists: Vec<bool> = (0..n)

@@ -95,6 +95,13 @@ RELAXED_CLEAR_WIDTH = 1.0
 #: beside a corridor at three times its own); see the README's realism section for the figures.
 RESEEDS = 2
 
+#: Lay out a round whose parent keeps the leftover (a corridor, a ward wing, a hall) as the
+#: corridor typology too (``SolverSettings.slabs``): the parent a straight corridor across its
+#: region, its rooms rectangles side by side along it, competing with the grown candidates by
+#: energy. Measured on the offline hundred (seeds 0–99): rooms below their type's minimum width
+#: 15.4 % -> 13.4 %, below their minimum area 2.2 % -> 1.8 %, at about the same time.
+SLABS = True
+
 Progress = Callable[[str, int, int], None]
 
 
@@ -165,7 +172,7 @@ def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSe
     rebalanced toward its targets and the repair of rooms left below their design minimums."""
     return SolverSettings(
         min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS, repair=True,
-        rebalance=True,
+        rebalance=True, slabs=SLABS,
     )
 
 

@@ -111,6 +111,14 @@ class SolverSettings(BaseModel):
       each re-cut draws a tenth of a retry's candidates (at the third retry's radii), and its
       winner is kept when the children's total shortfall falls and their rooms are no more
       elongated or jagged. 0: never, the paper's cutting node (given seeds stay where given).
+    - ``slabs``: in a round whose parent keeps the leftover, also lay the round out as the
+      corridor typology (``mansion-core``'s ``slab`` module): the parent a straight corridor
+      across its region (its width rule or clear width, 1.5–3 m), on both sides of it or at the
+      region's edge, the children rectangles side by side along it in the order of their seeds,
+      each at least its clear width across; a stub of corridor reaches what the parent must
+      touch outside. Each axis and three corridor positions are tried; the layouts pass the same
+      cleanup, width and topology filter as grown candidates and win when their energy is
+      lower. False: the paper's cutting node. Generated floors turn it on.
     - ``repair``: once every round is cut, rooms left below their node's ``min_area``,
       ``clear_width`` or ``max_aspect`` take a row or a column at a time from neighbours (one
       neighbour, one straight run of it, the whole face across several, or a neighbour that
@@ -164,6 +172,7 @@ class SolverSettings(BaseModel):
     refine_walls: bool = True
     growth: Literal["balanced", "longest"] = "balanced"
     reseeds: int = Field(default=0, ge=0)
+    slabs: bool = False
     repair: bool = False
     rebalance: bool = False
     keep_first_round: bool = False
