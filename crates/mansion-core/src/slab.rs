@@ -150,7 +150,6 @@ fn layout(
     }
     ranked.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
     let (_, vc, m) = *ranked.get(rank)?;
-    let _ = total;
     let mut grid = p.base.clone();
     for &c in &free {
         grid.cells[c] = EMPTY;

@@ -169,7 +169,8 @@ def _widths_at_most(graph: RoomGraph, width: float | None) -> RoomGraph:
 def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSettings:
     """The solver settings of generated floors: the floor-wide minimum width (``width`` m,
     :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``, :data:`RESEEDS`, each round
-    rebalanced toward its targets and the repair of rooms left below their design minimums."""
+    rebalanced toward its targets, the corridor typology's layouts (:data:`SLABS`) and the repair
+    of rooms left below their design minimums."""
     return SolverSettings(
         min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS, repair=True,
         rebalance=True, slabs=SLABS,
