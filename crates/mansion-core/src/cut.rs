@@ -860,6 +860,11 @@ pub fn cut(
         {
             candidates += 1;
             match p.finish(g, &mut s) {
+                Ok((_, g, _)) if !crate::slab::usable(&p, &g) => {
+                    *rejected
+                        .entry("slab layout with a room too small to use".into())
+                        .or_insert(0) += 1
+                }
                 // ties go to the grown candidates, and among slabs to the first
                 Ok((e, g, f)) if best.as_ref().is_none_or(|b| e < b.0) => {
                     best = Some((e, usize::MAX - i, g, f));

@@ -63,8 +63,34 @@ pub fn layouts(p: &Prepared, clear: &[usize]) -> Vec<Grid> {
     let wc = rule.max(own).clamp(MIN_CORRIDOR, MAX_CORRIDOR);
     let mut out = Vec::new();
     for axis in [Axis::X, Axis::Y] {
-        for rank in 0..VARIANTS {
-            if let Some(g) = layout(p, clear, parent, k, wc, axis, rank) {
+        let Some(frame) = Frame::of(p, parent, axis) else {
+            continue;
+        };
+        if frame.v1 + 1 - frame.v0 < wc + MIN_DEPTH || frame.u1 + 1 - frame.u0 < 2 * MIN_DEPTH {
+            continue;
+        }
+        let across = frame.across(p, k);
+        let mut single: Vec<(f64, Plan, Vec<usize>)> = Vec::new();
+        let mut double: Vec<(f64, Plan, Vec<usize>)> = Vec::new();
+        for plan in plans(frame.v0, frame.v1, wc) {
+            if let Some((cost, groups)) = frame.split(p, clear, &across, &plan) {
+                let list = if plan.corridors.len() == 1 {
+                    &mut single
+                } else {
+                    &mut double
+                };
+                list.push((cost, plan, groups));
+            }
+        }
+        for list in [&mut single, &mut double] {
+            list.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.corridors.cmp(&b.1.corridors)));
+        }
+        let chosen = single
+            .iter()
+            .take(VARIANTS)
+            .chain(double.iter().take(DOUBLE_VARIANTS));
+        for (_, plan, groups) in chosen {
+            if let Some(g) = frame.lay(p, clear, parent, wc, &across, plan, groups) {
                 out.push(g);
             }
         }
@@ -72,230 +98,543 @@ pub fn layouts(p: &Prepared, clear: &[usize]) -> Vec<Grid> {
     out
 }
 
-/// Corridor positions tried per axis, best matched first: a region's notches leave some of them
-/// with strips the width rules reject.
+/// Single-corridor positions tried per axis, best matched first: a region's notches leave some
+/// of them with strips the width rules reject.
 const VARIANTS: usize = 3;
+/// Two-corridor layouts tried per axis (the cross corridor at either end).
+const DOUBLE_VARIANTS: usize = 2;
 
-fn layout(
-    p: &Prepared,
-    clear: &[usize],
-    parent: Label,
-    k: usize,
-    wc: usize,
-    axis: Axis,
-    rank: usize,
-) -> Option<Grid> {
-    let w = p.region.w;
-    // the region's cells the round hands out (the spine the parent keeps is laid out afresh)
-    let free: Vec<usize> = p
-        .region
-        .cells
-        .iter()
-        .map(|&c| c as usize)
-        .filter(|&c| p.base.cells[c] == EMPTY || p.base.cells[c] == parent)
-        .collect();
-    let (mut u0, mut u1, mut v0, mut v1) = (usize::MAX, 0, usize::MAX, 0);
-    for &c in &free {
-        let (u, v) = axis.uv(c, w);
-        u0 = u0.min(u);
-        u1 = u1.max(u);
-        v0 = v0.min(v);
-        v1 = v1.max(v);
-    }
-    if free.is_empty() || v1 + 1 - v0 < wc + MIN_DEPTH || u1 + 1 - u0 < 2 * MIN_DEPTH {
-        return None;
-    }
-    let mut rows = vec![0usize; v1 + 2 - v0];
-    for &c in &free {
-        rows[axis.uv(c, w).1 - v0 + 1] += 1;
-    }
-    for i in 1..rows.len() {
-        rows[i] += rows[i - 1]; // rows[i]: free cells with v < v0 + i
-    }
-    let below = |v: usize| rows[v - v0];
-    let total = free.len();
-    // children in order across the corridor (by their seeds), targets prefix-summed
-    let mut across: Vec<usize> = (0..k).collect();
-    let seed = |i: usize| axis.uv_f(p.seeds[i].unwrap_or([0.0, 0.0]));
-    across.sort_by(|&a, &b| seed(a).1.total_cmp(&seed(b).1).then(a.cmp(&b)));
-    let mut sums = vec![0.0; k + 1];
-    for (j, &i) in across.iter().enumerate() {
-        sums[j + 1] = sums[j] + p.targets[i];
-    }
-    // the deepest clear width among the first m children (low) and the rest (high)
-    let mut deep_low = vec![MIN_DEPTH; k + 1];
-    let mut deep_high = vec![MIN_DEPTH; k + 1];
-    for j in 0..k {
-        deep_low[j + 1] = deep_low[j].max(least(p, clear, across[j]));
-        deep_high[k - 1 - j] = deep_high[k - j].max(least(p, clear, across[k - 1 - j]));
-    }
-    // the corridor at rows [vc, vc + wc) and the first m children below it
-    let mut ranked: Vec<(f64, usize, usize)> = Vec::new();
+/// Where the corridors and the room bands lie across the region: each corridor `wc` rows from its
+/// first row, each band of rooms the rows `[a, b)`, in ascending order; two corridors are joined
+/// by a cross corridor at the low (`Some(false)`) or high end along them.
+#[derive(Debug, Clone)]
+struct Plan {
+    corridors: Vec<usize>,
+    bands: Vec<(usize, usize)>,
+    cross: Option<bool>,
+}
+
+/// The plans of a region spanning rows `v0..=v1`: one corridor at every row it fits (rooms on
+/// both sides, or on one when it lies at an edge), and, where four bands of rooms fit, two
+/// corridors with rooms outside each and back to back between them.
+fn plans(v0: usize, v1: usize, wc: usize) -> Vec<Plan> {
+    let mut out = Vec::new();
     for vc in v0..=(v1 + 1 - wc) {
-        let mut best: Option<(f64, usize, usize)> = None;
-        let low = below(vc) as f64;
-        let high = (total - below(vc + wc)) as f64;
-        let (dl, dh) = (vc - v0, v1 + 1 - (vc + wc));
-        for m in 0..=k {
-            // a side holding rooms must be deep enough for them; one without none
-            if (m > 0 && dl < deep_low[m]) || (m < k && dh < deep_high[m]) {
-                continue;
-            }
-            let cost = (sums[m] - low).abs() + (sums[k] - sums[m] - high).abs();
-            if best.is_none_or(|(b, _, _)| cost < b) {
-                best = Some((cost, vc, m));
-            }
-        }
-        ranked.extend(best);
-    }
-    ranked.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-    let (_, vc, m) = *ranked.get(rank)?;
-    let mut grid = p.base.clone();
-    for &c in &free {
-        grid.cells[c] = EMPTY;
-    }
-    let band = |v: usize| v >= vc && v < vc + wc;
-    // the corridor keeps only the columns where the region is its full width: a shallower piece
-    // of it (a notch of the region) would be narrower than its rule, and goes to the rooms beside
-    let mut depth = vec![0usize; u1 + 1 - u0];
-    for &c in &free {
-        let (u, v) = axis.uv(c, w);
-        if band(v) {
-            depth[u - u0] += 1;
-        }
-    }
-    for &c in &free {
-        let (u, v) = axis.uv(c, w);
-        if band(v) && depth[u - u0] == wc {
-            grid.cells[c] = parent;
-        }
-    }
-    // the corridor reaches what the parent must touch outside the region (a core, the corridor
-    // it branches from): a stub across the side band, where a slab boundary will fall
-    let mut stubs: Vec<(usize, bool)> = Vec::new(); // (u, on the low side)
-    for &(a, b) in &p.spec.required {
-        let other = if a == parent {
-            b
-        } else if b == parent {
-            a
-        } else {
-            continue;
-        };
-        if p.index.get(other as usize).is_some_and(|&i| i >= 0) {
-            continue; // a child of this round
-        }
-        let touching: Vec<usize> = free
-            .iter()
-            .copied()
-            .filter(|&c| {
-                p.region
-                    .neighbours(c)
-                    .iter()
-                    .any(|&n| grid.cells[n] == other)
-            })
+        let bands = [(v0, vc), (vc + wc, v1 + 1)]
+            .into_iter()
+            .filter(|(a, b)| b > a)
             .collect();
-        if touching.iter().any(|&c| grid.cells[c] == parent) {
-            continue;
+        out.push(Plan {
+            corridors: vec![vc],
+            bands,
+            cross: None,
+        });
+    }
+    let depth = v1 + 1 - v0;
+    if depth >= 2 * wc + 4 * MIN_DEPTH {
+        let d = (depth - 2 * wc) / 4;
+        let extra = depth - 2 * wc - 4 * d; // to the inner bands first
+        let inner = |i: usize| d + usize::from(i < extra);
+        let c1 = v0 + d;
+        let mid = c1 + wc + inner(0);
+        let c2 = mid + inner(1);
+        for end in [false, true] {
+            out.push(Plan {
+                corridors: vec![c1, c2],
+                bands: vec![(v0, c1), (c1 + wc, mid), (mid, c2), (c2 + wc, v1 + 1)],
+                cross: Some(end),
+            });
         }
-        // the contact cell nearest the band
-        let gap = |c: usize| {
-            let v = axis.uv(c, w).1;
-            if v < vc {
-                vc - v
-            } else {
-                (v + 1).saturating_sub(vc + wc)
-            }
-        };
-        let Some(&end) = touching.iter().min_by_key(|&&c| (gap(c), c)) else {
-            continue;
-        };
-        let (ue, ve) = axis.uv(end, w);
-        if band(ve) {
-            // a notch of the band the corridor left to the rooms: the band's rows from the contact
-            // to the nearest column where the corridor is whole
-            let Some(full) = (0..depth.len())
-                .filter(|&i| depth[i] == wc)
-                .min_by_key(|&i| (i + u0).abs_diff(ue))
-            else {
-                continue;
-            };
-            let (a, b) = (ue.min(full + u0), ue.max(full + u0));
-            for &c in &free {
-                let (u, v) = axis.uv(c, w);
-                if band(v) && u >= a && u <= b {
-                    grid.cells[c] = parent;
-                }
-            }
-            continue;
+    }
+    out
+}
+
+/// A region seen along one axis: its free cells, their extent and row counts.
+struct Frame {
+    axis: Axis,
+    w: usize,
+    free: Vec<usize>,
+    u0: usize,
+    u1: usize,
+    v0: usize,
+    v1: usize,
+    /// `rows[i]`: free cells with `v < v0 + i`.
+    rows: Vec<usize>,
+}
+
+impl Frame {
+    fn of(p: &Prepared, parent: Label, axis: Axis) -> Option<Frame> {
+        let w = p.region.w;
+        // the region's cells the round hands out (the spine the parent keeps is laid out afresh)
+        let free: Vec<usize> = p
+            .region
+            .cells
+            .iter()
+            .map(|&c| c as usize)
+            .filter(|&c| p.base.cells[c] == EMPTY || p.base.cells[c] == parent)
+            .collect();
+        if free.is_empty() {
+            return None;
         }
-        let low = ve < vc;
-        let width = MIN_CORRIDOR.min(u1 + 1 - u0);
-        let us = ue.saturating_sub(width / 2).max(u0).min(u1 + 1 - width);
+        let (mut u0, mut u1, mut v0, mut v1) = (usize::MAX, 0, usize::MAX, 0);
         for &c in &free {
             let (u, v) = axis.uv(c, w);
-            let between = if low {
-                v >= ve && v < vc
-            } else {
-                v >= vc + wc && v <= ve
-            };
-            if u >= us && u < us + width && between {
+            u0 = u0.min(u);
+            u1 = u1.max(u);
+            v0 = v0.min(v);
+            v1 = v1.max(v);
+        }
+        let mut rows = vec![0usize; v1 + 2 - v0];
+        for &c in &free {
+            rows[axis.uv(c, w).1 - v0 + 1] += 1;
+        }
+        for i in 1..rows.len() {
+            rows[i] += rows[i - 1];
+        }
+        Some(Frame {
+            axis,
+            w,
+            free,
+            u0,
+            u1,
+            v0,
+            v1,
+            rows,
+        })
+    }
+
+    /// Free cells in rows `[a, b)`.
+    fn cells(&self, a: usize, b: usize) -> usize {
+        self.rows[b - self.v0] - self.rows[a - self.v0]
+    }
+
+    fn seed(&self, p: &Prepared, i: usize) -> (f64, f64) {
+        self.axis.uv_f(p.seeds[i].unwrap_or([0.0, 0.0]))
+    }
+
+    /// The children in order across the corridors, by their seeds.
+    fn across(&self, p: &Prepared, k: usize) -> Vec<usize> {
+        let mut across: Vec<usize> = (0..k).collect();
+        across.sort_by(|&a, &b| {
+            self.seed(p, a)
+                .1
+                .total_cmp(&self.seed(p, b).1)
+                .then(a.cmp(&b))
+        });
+        across
+    }
+
+    /// The children (in `across` order) split into consecutive groups, one per band, so that the
+    /// bands' cells best match the groups' targets (the sum of the mismatches, in cells), each
+    /// band at least as deep as its rooms' clear widths; with the number of children per band.
+    /// None when no split keeps the depths.
+    fn split(
+        &self,
+        p: &Prepared,
+        clear: &[usize],
+        across: &[usize],
+        plan: &Plan,
+    ) -> Option<(f64, Vec<usize>)> {
+        let k = across.len();
+        let nb = plan.bands.len();
+        let mut sums = vec![0.0; k + 1];
+        for (j, &i) in across.iter().enumerate() {
+            sums[j + 1] = sums[j] + p.targets[i];
+        }
+        const NONE: f64 = f64::INFINITY;
+        // best[b][j]: the first b bands holding the first j children; from[b][j]: where band b-1's
+        // group starts
+        let mut best = vec![vec![NONE; k + 1]; nb + 1];
+        let mut from = vec![vec![0usize; k + 1]; nb + 1];
+        best[0][0] = 0.0;
+        for b in 0..nb {
+            let (a, z) = plan.bands[b];
+            let cap = self.cells(a, z) as f64;
+            for i in 0..=k {
+                if best[b][i] == NONE {
+                    continue;
+                }
+                let mut deep = 0;
+                for j in i..=k {
+                    if j > i {
+                        deep = deep.max(least(p, clear, across[j - 1]));
+                        if z - a < deep.max(MIN_DEPTH) {
+                            break;
+                        }
+                    }
+                    let cost = best[b][i] + (sums[j] - sums[i] - cap).abs();
+                    if cost < best[b + 1][j] {
+                        best[b + 1][j] = cost;
+                        from[b + 1][j] = i;
+                    }
+                }
+            }
+        }
+        if best[nb][k] == NONE {
+            return None;
+        }
+        let mut counts = vec![0usize; nb];
+        let mut j = k;
+        for b in (0..nb).rev() {
+            let i = from[b + 1][j];
+            counts[b] = j - i;
+            j = i;
+        }
+        Some((best[nb][k], counts))
+    }
+
+    /// Lay out one plan.
+    #[allow(clippy::too_many_arguments)]
+    fn lay(
+        &self,
+        p: &Prepared,
+        clear: &[usize],
+        parent: Label,
+        wc: usize,
+        across: &[usize],
+        plan: &Plan,
+        counts: &[usize],
+    ) -> Option<Grid> {
+        let (axis, w, u0, u1) = (self.axis, self.w, self.u0, self.u1);
+        let mut grid = p.base.clone();
+        for &c in &self.free {
+            grid.cells[c] = EMPTY;
+        }
+        let corridor = |v: usize| plan.corridors.iter().any(|&vc| v >= vc && v < vc + wc);
+        // a corridor keeps only the columns where the region is its full width: a shallower
+        // piece of it (a notch of the region) would be narrower than its rule, and goes to the
+        // rooms beside
+        let mut depth = vec![vec![0usize; u1 + 1 - u0]; plan.corridors.len()];
+        for &c in &self.free {
+            let (u, v) = axis.uv(c, w);
+            for (n, &vc) in plan.corridors.iter().enumerate() {
+                if v >= vc && v < vc + wc {
+                    depth[n][u - u0] += 1;
+                }
+            }
+        }
+        let whole = |u: usize, v: usize| {
+            plan.corridors
+                .iter()
+                .zip(&depth)
+                .any(|(&vc, d)| v >= vc && v < vc + wc && d[u - u0] == wc)
+        };
+        for &c in &self.free {
+            let (u, v) = axis.uv(c, w);
+            if whole(u, v) {
                 grid.cells[c] = parent;
             }
         }
-        stubs.push((us, low));
-        stubs.push((us + width, low));
-    }
-    // each side: its children along the corridor by their seeds, each a run of whole columns
-    // holding its share of the side's cells
-    for (rooms, low) in [(&across[..m], true), (&across[m..], false)] {
-        if rooms.is_empty() {
-            continue;
+        // two corridors are joined at one end
+        let mut stubs: Vec<(usize, usize, usize, usize)> = Vec::new(); // u range, v range
+        if let (Some(end), Some(&first), Some(&last)) =
+            (plan.cross, plan.corridors.first(), plan.corridors.last())
+        {
+            let (a, b) = if end {
+                (u1 + 1 - wc, u1 + 1)
+            } else {
+                (u0, u0 + wc)
+            };
+            for &c in &self.free {
+                let (u, v) = axis.uv(c, w);
+                if u >= a && u < b && v >= first && v < last + wc {
+                    grid.cells[c] = parent;
+                }
+            }
+            stubs.push((a, b, first, last + wc));
         }
-        let side = |v: usize| if low { v < vc } else { v >= vc + wc };
-        let mut cols = vec![0usize; u1 + 1 - u0];
-        for &c in &free {
-            let (u, v) = axis.uv(c, w);
-            if side(v) && grid.cells[c] == EMPTY {
-                cols[u - u0] += 1;
+        // the corridor reaches what the parent must touch outside the region (a core, the
+        // corridor it branches from): a stub across the band between, on a slab boundary
+        for &(a, b) in &p.spec.required {
+            let other = if a == parent {
+                b
+            } else if b == parent {
+                a
+            } else {
+                continue;
+            };
+            if p.index.get(other as usize).is_some_and(|&i| i >= 0) {
+                continue; // a child of this round
+            }
+            let touching: Vec<usize> = self
+                .free
+                .iter()
+                .copied()
+                .filter(|&c| {
+                    p.region
+                        .neighbours(c)
+                        .iter()
+                        .any(|&n| grid.cells[n] == other)
+                })
+                .collect();
+            if touching.iter().any(|&c| grid.cells[c] == parent) {
+                continue;
+            }
+            // the contact cell nearest a corridor, and that corridor
+            let gap = |c: usize| {
+                let v = axis.uv(c, w).1;
+                plan.corridors
+                    .iter()
+                    .map(|&vc| {
+                        if v < vc {
+                            (vc - v, vc)
+                        } else {
+                            ((v + 1).saturating_sub(vc + wc), vc)
+                        }
+                    })
+                    .min()
+                    .unwrap_or((0, 0))
+            };
+            let Some(&end) = touching.iter().min_by_key(|&&c| (gap(c), c)) else {
+                continue;
+            };
+            let (ue, ve) = axis.uv(end, w);
+            let (_, vc) = gap(end);
+            if corridor(ve) {
+                // a notch of a corridor left to the rooms: its rows from the contact to the
+                // nearest column where it is whole
+                let n = plan.corridors.iter().position(|&x| x == vc).unwrap_or(0);
+                let Some(full) = (0..depth[n].len())
+                    .filter(|&i| depth[n][i] == wc)
+                    .min_by_key(|&i| (i + u0).abs_diff(ue))
+                else {
+                    continue;
+                };
+                let (a, b) = (ue.min(full + u0), ue.max(full + u0));
+                for &c in &self.free {
+                    let (u, v) = axis.uv(c, w);
+                    if v >= vc && v < vc + wc && u >= a && u <= b {
+                        grid.cells[c] = parent;
+                    }
+                }
+                continue;
+            }
+            let width = MIN_CORRIDOR.min(u1 + 1 - u0);
+            let us = ue.saturating_sub(width / 2).max(u0).min(u1 + 1 - width);
+            // from the corridor to the contact, and a little past it along the contact so that
+            // the walls share a door's width
+            let (va, vb) = if ve < vc {
+                (ve.saturating_sub(CONTACT), vc)
+            } else {
+                (vc + wc, ve + 1 + CONTACT)
+            };
+            for &c in &self.free {
+                let (u, v) = axis.uv(c, w);
+                if u >= us && u < us + width && v >= va && v < vb {
+                    grid.cells[c] = parent;
+                }
+            }
+            stubs.push((us, us + width, va, vb));
+        }
+        // each band: its children along the corridor by their seeds, each a run of whole columns
+        // holding its share of the band's cells
+        let mut next = 0;
+        for (&(a, b), &n) in plan.bands.iter().zip(counts) {
+            let rooms = &across[next..next + n];
+            next += n;
+            if rooms.is_empty() {
+                continue;
+            }
+            let mut cols = vec![0usize; u1 + 1 - u0];
+            for &c in &self.free {
+                let (u, v) = axis.uv(c, w);
+                if v >= a && v < b && grid.cells[c] == EMPTY {
+                    cols[u - u0] += 1;
+                }
+            }
+            let mut order: Vec<usize> = rooms.to_vec();
+            order.sort_by(|&x, &y| {
+                self.seed(p, x)
+                    .0
+                    .total_cmp(&self.seed(p, y).0)
+                    .then(x.cmp(&y))
+            });
+            // a stub through this band is a boundary between its rooms
+            let forced: Vec<usize> = stubs
+                .iter()
+                .filter(|s| s.2 < b && s.3 > a)
+                .flat_map(|s| [s.0, s.1])
+                .collect();
+            let owner = columns(p, clear, &order, &cols, &forced, u0)?;
+            for &c in &self.free {
+                let (u, v) = axis.uv(c, w);
+                if v >= a && v < b && grid.cells[c] == EMPTY {
+                    grid.cells[c] = p.labels[owner[u - u0]];
+                }
             }
         }
-        let mut order: Vec<usize> = rooms.to_vec();
-        order.sort_by(|&a, &b| seed(a).0.total_cmp(&seed(b).0).then(a.cmp(&b)));
-        let owner = columns(p, clear, &order, &cols, &stubs, u0, low)?;
-        for &c in &free {
-            let (u, v) = axis.uv(c, w);
-            if side(v) && grid.cells[c] == EMPTY {
-                grid.cells[c] = p.labels[owner[u - u0]];
+        // a room a notch of the region cut in two keeps its largest piece; the rest is left over
+        self.keep_largest_pieces(p, &mut grid, parent);
+        // cells left over (a notch of a corridor) join the room beside them across it
+        let step = match axis {
+            Axis::X => w,
+            Axis::Y => 1,
+        };
+        for &c in &self.free {
+            if grid.cells[c] != EMPTY {
+                continue;
             }
-        }
-    }
-    // cells left over (a notch of the corridor band) join the room beside them across the band
-    let step = match axis {
-        Axis::X => w,
-        Axis::Y => 1,
-    };
-    for &c in &free {
-        if grid.cells[c] != EMPTY {
-            continue;
-        }
-        for dir in [false, true] {
-            let mut q = c;
-            loop {
-                q = if dir { q + step } else { q - step };
-                if !p.region.inside[q] || grid.cells[q] != EMPTY {
+            for dir in [false, true] {
+                let mut q = c;
+                loop {
+                    q = if dir { q + step } else { q - step };
+                    if !p.region.inside[q] || grid.cells[q] != EMPTY {
+                        break;
+                    }
+                }
+                let l = grid.cells[q];
+                if p.region.inside[q]
+                    && l != parent
+                    && p.index.get(l as usize).is_some_and(|&i| i >= 0)
+                {
+                    grid.cells[c] = l;
                     break;
                 }
             }
-            let l = grid.cells[q];
-            if p.region.inside[q] && l != parent && p.index.get(l as usize).is_some_and(|&i| i >= 0)
-            {
-                grid.cells[c] = l;
+        }
+        Some(grid)
+    }
+}
+
+impl Frame {
+    /// Every child of the round in one piece: the cells of its smaller pieces are emptied, and
+    /// join the room they touch most (the parent when they touch no child).
+    fn keep_largest_pieces(&self, p: &Prepared, grid: &mut Grid, parent: Label) {
+        let child = |l: Label| l != parent && p.index.get(l as usize).is_some_and(|&i| i >= 0);
+        let mut seen = vec![false; grid.cells.len()];
+        let mut pieces: Vec<(Label, Vec<usize>)> = Vec::new();
+        for &c in &self.free {
+            let l = grid.cells[c];
+            if seen[c] || !child(l) {
+                continue;
+            }
+            let mut piece = vec![c];
+            seen[c] = true;
+            let mut i = 0;
+            while i < piece.len() {
+                for n in p.region.neighbours(piece[i]) {
+                    if p.region.inside[n] && !seen[n] && grid.cells[n] == l {
+                        seen[n] = true;
+                        piece.push(n);
+                    }
+                }
+                i += 1;
+            }
+            pieces.push((l, piece));
+        }
+        // the largest piece of each label (the first found on ties) stays
+        let mut largest: Vec<(Label, usize)> = Vec::new();
+        for (k, (l, piece)) in pieces.iter().enumerate() {
+            match largest.iter_mut().find(|(x, _)| x == l) {
+                Some(e) if pieces[e.1].1.len() < piece.len() => e.1 = k,
+                Some(_) => {}
+                None => largest.push((*l, k)),
+            }
+        }
+        let mut loose: Vec<usize> = Vec::new();
+        for (k, (_, piece)) in pieces.iter().enumerate() {
+            if !largest.iter().any(|&(_, x)| x == k) {
+                loose.extend(piece.iter().copied());
+            }
+        }
+        if loose.is_empty() {
+            return;
+        }
+        for &c in &loose {
+            grid.cells[c] = EMPTY;
+        }
+        // grow the neighbours into the loose cells, a ring at a time, each cell to the child it
+        // touches most (lowest label on ties)
+        loop {
+            let mut changes: Vec<(usize, Label)> = Vec::new();
+            for &c in &loose {
+                if grid.cells[c] != EMPTY {
+                    continue;
+                }
+                let mut votes: Vec<(Label, usize)> = Vec::new();
+                for n in p.region.neighbours(c) {
+                    let l = grid.cells[n];
+                    if p.region.inside[n] && child(l) {
+                        match votes.iter_mut().find(|(x, _)| *x == l) {
+                            Some(v) => v.1 += 1,
+                            None => votes.push((l, 1)),
+                        }
+                    }
+                }
+                if let Some(&(l, _)) = votes
+                    .iter()
+                    .max_by(|a, b| a.1.cmp(&b.1).then(b.0.cmp(&a.0)))
+                {
+                    changes.push((c, l));
+                }
+            }
+            if changes.is_empty() {
                 break;
+            }
+            for (c, l) in changes {
+                grid.cells[c] = l;
+            }
+        }
+        for &c in &loose {
+            if grid.cells[c] == EMPTY {
+                grid.cells[c] = parent;
             }
         }
     }
-    Some(grid)
 }
+
+/// Side, in cells, of the square every room a slab layout finishes must hold (1.5 m on the 0.5 m
+/// grid: the least a room is planned from, `mansion.planning.program.USABLE_AREA`).
+pub const USABLE: usize = 3;
+
+/// Does every room the round finishes (no later round cuts it) hold a [`USABLE`] square? The
+/// growth's candidates may leave such a room (the repair mends it); a slab layout that does is
+/// a worse one than the growth's, not a better.
+pub fn usable(p: &Prepared, grid: &Grid) -> bool {
+    let w = grid.w;
+    p.labels.iter().zip(&p.targets).all(|(&l, &target)| {
+        // a zone later rounds cut into rooms: a square of a good part of its size
+        let side = if p.spec.final_labels.contains(&l) {
+            USABLE
+        } else {
+            USABLE.max((ZONE_SQUARE * target.sqrt()) as usize)
+        };
+        let square = p.region.cells.iter().any(|&c| {
+            let c = c as usize;
+            let (x, y) = (c % w, c / w);
+            x + side <= w
+                && y + side <= grid.h
+                && (0..side).all(|dy| (0..side).all(|dx| grid.cells[(y + dy) * w + x + dx] == l))
+        });
+        if !square || p.spec.final_labels.contains(&l) {
+            return square;
+        }
+        // and a zone no longer than ZONE_ASPECT times its width
+        let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
+        for &c in &p.region.cells {
+            let c = c as usize;
+            if grid.cells[c] == l {
+                let (x, y) = (c % w, c / w);
+                x0 = x0.min(x);
+                y0 = y0.min(y);
+                x1 = x1.max(x);
+                y1 = y1.max(y);
+            }
+        }
+        let (a, b) = ((x1 + 1 - x0) as f64, (y1 + 1 - y0) as f64);
+        a.max(b) <= ZONE_ASPECT * a.min(b)
+    })
+}
+
+/// Longest side of a zone's box over its shortest in a slab layout.
+const ZONE_ASPECT: f64 = 2.0;
+
+/// A zone's square side over the square root of its target.
+const ZONE_SQUARE: f64 = 0.6;
+
+/// Cells a stub runs on past the contact it is drawn to, so that the corridor and the room
+/// beyond share a door's width of wall.
+const CONTACT: usize = 2;
 
 /// The fewest cells across a room's slab: its clear width, or its width rule when wider (2 at
 /// least).
@@ -315,9 +654,8 @@ fn columns(
     clear: &[usize],
     order: &[usize],
     cols: &[usize],
-    stubs: &[(usize, bool)],
+    forced: &[usize],
     u0: usize,
-    low: bool,
 ) -> Option<Vec<usize>> {
     let span: Vec<usize> = (0..cols.len()).filter(|&u| cols[u] > 0).collect();
     let (first, last) = (*span.first()?, *span.last()?);
@@ -335,7 +673,7 @@ fn columns(
     for u in first..=last {
         // the columns the rooms after this one still need
         let rest: usize = order[j + 1..].iter().map(|&i| min_cols(i)).sum();
-        let forced = stubs.iter().any(|&(s, l)| l == low && s == u + u0);
+        let forced = forced.contains(&(u + u0));
         let half = cols[u] as f64 / 2.0;
         let full = run >= min_cols(order[j]);
         if j + 1 < order.len() && full && (cum + half >= bound || forced || last + 1 - u <= rest) {
@@ -355,6 +693,7 @@ mod tests {
     use super::*;
     use crate::cut::{cut, leftover_round, CutOptions, RoundSpec};
     use crate::grid::Walls;
+    use crate::grid::OUTSIDE;
     use crate::region::parse_rows;
 
     /// A 20 × 13 wing (parent 0, keeping the leftover) beside a stair (5) at its west end, cut
@@ -404,7 +743,7 @@ mod tests {
         let layouts = layouts(&p, &opts.clear);
         // up to three corridor positions on each axis; those too shallow for the rooms' clear
         // widths are not tried
-        assert!(!layouts.is_empty() && layouts.len() <= 2 * VARIANTS);
+        assert!(!layouts.is_empty() && layouts.len() <= 2 * (VARIANTS + DOUBLE_VARIANTS));
         let mut passed = 0;
         for g in layouts {
             for l in 1..=4 {
@@ -467,5 +806,132 @@ mod tests {
             &opts.clear
         )
         .is_empty());
+    }
+
+    #[test]
+    fn a_deep_region_gets_two_corridors_joined_at_either_end() {
+        // rows 0..30 with 3-row corridors: one corridor at each of rows 0..=27, and two with
+        // four bands of (30 - 6) / 4 = 6 rows
+        let all = plans(0, 29, 3);
+        assert_eq!(all.iter().filter(|p| p.corridors.len() == 1).count(), 28);
+        let two: Vec<&Plan> = all.iter().filter(|p| p.corridors.len() == 2).collect();
+        assert_eq!(two.len(), 2);
+        assert_eq!(two[0].corridors, vec![6, 21]);
+        assert_eq!(two[0].bands, vec![(0, 6), (9, 15), (15, 21), (24, 30)]);
+        assert_eq!((two[0].cross, two[1].cross), (Some(false), Some(true)));
+        // too shallow for four bands of rooms: one corridor only
+        assert!(plans(0, 16, 3).iter().all(|p| p.corridors.len() == 1));
+    }
+
+    #[test]
+    fn children_split_between_bands_by_area_and_depth() {
+        let (grid, spec) = wing();
+        let walls = Walls::none(grid.w, grid.h);
+        let opts = options(true);
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        let frame = Frame::of(&p, 0, Axis::X).expect("a frame");
+        let across = frame.across(&p, 4);
+        // the two southern seeds come first across the corridor
+        assert_eq!(&across[..2], &[0, 1]);
+        // 13 rows: a corridor at rows 6..9 of the padded grid leaves 5 rows (100 cells) below
+        // and 5 above, two rooms of 50 each side
+        let (v0, v1) = (frame.v0, frame.v1);
+        let plan = Plan {
+            corridors: vec![v0 + 5],
+            bands: vec![(v0, v0 + 5), (v0 + 8, v1 + 1)],
+            cross: None,
+        };
+        let (cost, counts) = frame
+            .split(&p, &opts.clear, &across, &plan)
+            .expect("a split");
+        assert_eq!(counts, vec![2, 2]);
+        assert_eq!(cost, 0.0);
+        // bands shallower than the rooms' clear width (4 cells) hold none of them
+        let shallow = Plan {
+            corridors: vec![v0 + 3],
+            bands: vec![(v0, v0 + 3), (v0 + 6, v1 + 1)],
+            cross: None,
+        };
+        let (_, counts) = frame
+            .split(&p, &opts.clear, &across, &shallow)
+            .expect("a split");
+        assert_eq!(counts, vec![0, 4]);
+    }
+
+    #[test]
+    fn a_room_cut_in_two_keeps_its_larger_piece() {
+        // room 1 on both sides of room 2's column: its smaller piece goes to the room it touches
+        // most (2), not to the parent
+        let rows = ["1112221", "1112221", "0000000"];
+        let grid = parse_rows(&rows);
+        let spec = leftover_round(
+            6.0,
+            vec![[2.0, 3.0], [5.0, 3.0]],
+            7.0,
+            vec![],
+            &["p", "a", "b"],
+        );
+        let walls = Walls::none(grid.w, grid.h);
+        let opts = options(true);
+        let mut whole = grid.clone();
+        for c in whole.cells.iter_mut() {
+            if *c != OUTSIDE {
+                *c = 0;
+            }
+        }
+        let p = Prepared::new(&whole, &walls, &spec, &opts, 3, 0);
+        let frame = Frame::of(&p, 0, Axis::X).expect("a frame");
+        let mut g = grid.clone();
+        frame.keep_largest_pieces(&p, &mut g, 0);
+        assert_eq!(
+            extent(&g, 1),
+            (6, (1, 2, 3, 3)),
+            "room 1 keeps its three-column piece"
+        );
+        assert_eq!(
+            extent(&g, 2),
+            (8, (4, 2, 7, 3)),
+            "room 2 takes the cells cut off room 1"
+        );
+        assert_eq!(extent(&g, 0).0, 7, "the parent gains nothing");
+    }
+
+    #[test]
+    fn a_slab_must_leave_rooms_usable_and_zones_compact() {
+        let (grid, mut spec) = wing();
+        let walls = Walls::none(grid.w, grid.h);
+        let opts = options(true);
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        let frame = Frame::of(&p, 0, Axis::X).expect("a frame");
+        let (v0, v1, u0, u1) = (frame.v0, frame.v1, frame.u0, frame.u1);
+        let w = grid.w;
+        // a layout by hand: corridor rows v0+5..v0+8, rooms 1 and 2 below, 3 and 4 above, room
+        // 4 only two columns wide
+        let mut g = grid.clone();
+        for y in v0..=v1 {
+            for x in u0..=u1 {
+                let low = y < v0 + 5;
+                let high = y >= v0 + 8;
+                g.cells[y * w + x] = match (low, high, x < u0 + 10, x >= u1 - 1) {
+                    (true, _, true, _) => 1,
+                    (true, _, false, _) => 2,
+                    (_, true, _, true) => 4,
+                    (_, true, _, false) => 3,
+                    _ => 0,
+                };
+            }
+        }
+        assert!(!usable(&p, &g), "room 4 holds no 3 × 3 square");
+        for y in v0 + 8..=v1 {
+            for x in u1 - 3..=u1 {
+                g.cells[y * w + x] = 4;
+            }
+        }
+        assert!(usable(&p, &g));
+        // as zones (cut again later), rooms must also be no longer than twice their width:
+        // room 4 is 4 × 5, room 3 16 × 5
+        spec.final_labels = vec![0, 4];
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        assert!(!usable(&p, &g), "zone 3 is more than twice as long as wide");
     }
 }
