@@ -113,11 +113,14 @@ class SolverSettings(BaseModel):
       elongated or jagged. 0: never, the paper's cutting node (given seeds stay where given).
     - ``slabs``: in a round whose parent keeps the leftover, also lay the round out as the
       corridor typology (``mansion-core``'s ``slab`` module): the parent a straight corridor
-      across its region (its width rule or clear width, 1.5–3 m), on both sides of it or at the
-      region's edge, the children rectangles side by side along it in the order of their seeds,
-      each at least its clear width across; a stub of corridor reaches what the parent must
-      touch outside. Each axis and three corridor positions are tried; the layouts pass the same
-      cleanup, width and topology filter as grown candidates and win when their energy is
+      across its region (its width rule or clear width, 1.5–3 m) with rooms on both sides of it
+      or, at the region's edge, on one; or, where four bands of rooms fit, two parallel
+      corridors joined at one end. The children are split between the bands by their seeds and
+      areas and laid side by side along the corridor in the order of their seeds, each at least
+      its clear width across; a stub of corridor reaches what the parent must touch outside.
+      Each axis gives three single-corridor positions and both two-corridor layouts; they pass
+      the same cleanup, width and topology filter as grown candidates, must leave each room a
+      1.5 m square and each zone no longer than twice its width, and win when their energy is
       lower. False: the paper's cutting node. Generated floors turn it on.
     - ``repair``: once every round is cut, rooms left below their node's ``min_area``,
       ``clear_width`` or ``max_aspect`` take a row or a column at a time from neighbours (one
