@@ -100,7 +100,7 @@ pub fn layouts(p: &Prepared, clear: &[usize]) -> Vec<Grid> {
 
 /// Single-corridor positions tried per axis, best matched first: a region's notches leave some
 /// of them with strips the width rules reject.
-const VARIANTS: usize = 3;
+const VARIANTS: usize = 5;
 /// Two-corridor layouts tried per axis (the cross corridor at either end).
 const DOUBLE_VARIANTS: usize = 2;
 
@@ -741,8 +741,8 @@ mod tests {
         let opts = options(true);
         let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
         let layouts = layouts(&p, &opts.clear);
-        // up to three corridor positions on each axis; those too shallow for the rooms' clear
-        // widths are not tried
+        // up to VARIANTS single-corridor positions and the two-corridor layouts on each axis;
+        // those too shallow for the rooms' clear widths are not tried
         assert!(!layouts.is_empty() && layouts.len() <= 2 * (VARIANTS + DOUBLE_VARIANTS));
         let mut passed = 0;
         for g in layouts {

@@ -99,8 +99,8 @@ RESEEDS = 2
 #: corridor typology too (``SolverSettings.slabs``): the parent one straight corridor, or two
 #: joined at one end, across its region, its rooms rectangles side by side along them, competing
 #: with the grown candidates by energy. Measured on the offline hundred (seeds 0–99): rooms below
-#: their type's minimum width 15.4 % -> 12.9 %, below their minimum area 2.2 % -> 2.0 % (seeds
-#: 100–199: 14.9 -> 13.8 %, 2.8 -> 2.6 %); every pass on costs 1.18 times every pass off.
+#: their type's minimum width 15.4 % -> 12.7 %, below their minimum area 2.2 % -> 2.0 % (seeds
+#: 100–199: 14.9 -> 13.8 %, 2.8 -> 2.5 %); see the README's realism section for the time.
 SLABS = True
 
 Progress = Callable[[str, int, int], None]

@@ -118,7 +118,7 @@ class SolverSettings(BaseModel):
       corridors joined at one end. The children are split between the bands by their seeds and
       areas and laid side by side along the corridor in the order of their seeds, each at least
       its clear width across; a stub of corridor reaches what the parent must touch outside.
-      Each axis gives three single-corridor positions and both two-corridor layouts; they pass
+      Each axis gives five single-corridor positions and both two-corridor layouts; they pass
       the same cleanup, width and topology filter as grown candidates, must leave each room a
       1.5 m square and each zone no longer than twice its width, and win when their energy is
       lower. False: the paper's cutting node. Generated floors turn it on.
