@@ -2,7 +2,8 @@
 //! a hall) laid out the way designers lay out hotels, wards, schools and offices, instead of grown
 //! from seeds. The parent becomes a straight corridor across its region, and the children become
 //! slabs side by side along it: on both sides (double-loaded) or on one (single-loaded, the
-//! corridor at the region's edge).
+//! corridor at the region's edge); a region deep enough for four bands of rooms may instead get
+//! two parallel corridors joined at one end, rooms outside each and back to back between them.
 //!
 //! Why: grown rooms end where a neighbour stopped them, so wide rooms (a 3.2 m ward, a 5.4 m
 //! classroom) rarely keep their clear width, and the parent keeps whatever no child reached.
@@ -45,9 +46,10 @@ impl Axis {
     }
 }
 
-/// The slab layouts of a round: for each axis, the corridor's position and the split of the
-/// children between its two sides that best match the sides' cells to the children's targets.
-/// Empty when the round's parent does not keep the leftover or it has fewer than two children.
+/// The slab layouts of a round: for each axis, the [`VARIANTS`] single-corridor positions (and
+/// the two-corridor layouts) whose split of the children between the bands best matches the
+/// bands' cells to the children's targets. Empty when the round's parent does not keep the
+/// leftover or it has fewer than two children.
 /// `clear`: each label's clear width in cells (the corridor's is its width when wider than its
 /// rule).
 pub fn layouts(p: &Prepared, clear: &[usize]) -> Vec<Grid> {
