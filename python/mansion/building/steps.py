@@ -45,7 +45,7 @@ from mansion.models import Core, FloorLayout, Footprint, RoomGraph
 from mansion.models.layout import LayoutRoom
 from mansion.models.building import Building, BuildingProgram, Floor, Palette, PositionWord, RoomCard
 from mansion.models.room_design import ELONGATED_ASPECT, room_design
-from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, box_aspect, fits_square, narrow_share
+from mansion.models.room_shape import EPS, box_aspect, fits_square, mostly_narrower
 
 __all__ = [
     "ATTEMPTS",
@@ -274,7 +274,7 @@ def misshapen(rooms: Iterable[LayoutRoom]) -> tuple[int, int]:
         shape = Polygon(room.polygon, room.holes)
         if not room_design(room.room_type).circulation:
             elongated += box_aspect(shape) > ELONGATED_ASPECT
-        slivers += narrow_share(shape, USABLE_SIDE, inclusive=True) > TOLERANCE + SHARE_EPS
+        slivers += mostly_narrower(shape, USABLE_SIDE, inclusive=True)
     return elongated, slivers
 
 

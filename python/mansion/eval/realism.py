@@ -49,6 +49,7 @@ from mansion.models.room_shape import (
     TOLERANCE,
     box_aspect,
     fits_square,
+    mostly_narrower,
     narrow_share,
 )
 
@@ -254,7 +255,7 @@ def summarise(rooms: Iterable[RoomRecord], buildings: int = 0, narrow: float = N
         key = design_key(r.room_type) or r.room_type
         shape = r.polygon
         f.rooms += 1
-        if narrow_share(shape, narrow, inclusive=True) > TOLERANCE + _SHARE_EPS:
+        if mostly_narrower(shape, narrow, inclusive=True):
             f.sliver += 1
             slivers[key] += 1
         if not d.circulation:
@@ -264,7 +265,7 @@ def summarise(rooms: Iterable[RoomRecord], buildings: int = 0, narrow: float = N
             f.no_square += 1
         need = corridor_width(r.building_type) if d.circulation and r.building_type != "t2d" else d.min_width
         small = shape.area < d.min_area - _EPS
-        thin = narrow_share(shape, need) > TOLERANCE + _SHARE_EPS
+        thin = mostly_narrower(shape, need)
         f.below_area += small
         f.below_width += thin
         if small or thin:

@@ -7,7 +7,9 @@ from __future__ import annotations
 
 from shapely.geometry.base import BaseGeometry
 
-__all__ = ["EPS", "SHARE_EPS", "TOLERANCE", "box_aspect", "fits_square", "narrow_share", "opening"]
+__all__ = [
+    "EPS", "SHARE_EPS", "TOLERANCE", "box_aspect", "fits_square", "mostly_narrower", "narrow_share", "opening",
+]
 
 #: Share of a room's area that may be narrower than a limit before the room is flagged.
 TOLERANCE = 0.10
@@ -39,6 +41,12 @@ def narrow_share(shape: BaseGeometry, width: float, inclusive: bool = False) -> 
         return 0.0
     kept = opening(shape, width, inclusive).intersection(shape).area
     return max(0.0, 1.0 - kept / shape.area)
+
+
+def mostly_narrower(shape: BaseGeometry, width: float, inclusive: bool = False) -> bool:
+    """More than :data:`TOLERANCE` of ``shape``'s area in parts narrower than ``width``
+    (``inclusive``: or exactly that wide): a sliver at 1 m, a room below its type's clear width."""
+    return narrow_share(shape, width, inclusive) > TOLERANCE + SHARE_EPS
 
 
 def fits_square(shape: BaseGeometry, side: float, inclusive: bool = False) -> bool:
