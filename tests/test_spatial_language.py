@@ -518,3 +518,38 @@ def test_the_heuristic_fallback_tries_other_solver_seeds(monkeypatch: pytest.Mon
     with pytest.raises(InfeasibleLayoutError):
         fp._heuristic_solve(None, rng_seed=0)
     assert seen == [0, 1]
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        # how a room lies is not where it is
+        "The master room measures 10ft W X 11 ft L with the longer side running north to south.",
+        "The common room is 11 ft by 9 ft and its long side runs east to west.",
+        "The kitchen extends from north to south.",
+        # a part of the room itself
+        "Its small portion in the northeast corner has been occupied by the storage.",
+        "There is a little space at its northwest corner.",
+        "It is 30 feet long, with various smaller extensions to the west and east.",
+    ],
+)
+def test_extent_and_parts_of_a_room_are_not_positions(sentence: str) -> None:
+    positions = {f for f in facts("The kitchen is in the middle. " + sentence) if f[1] == "position"}
+    assert positions <= {("kitchen_2", "position", "centre", ()), ("master_room_1", "position", "centre", ())}, positions
+
+
+def test_a_corner_of_another_room_is_a_relation_to_it() -> None:
+    rooms = [*FLAT, KnownRoom("storage_8", "storage")]
+    for text in ("The storage is in the master room's southwest corner.", "The storage is in the master rooms southwest corner, 3 by 4 feet."):
+        assert {f for f in facts(text, rooms) if f[1] != "size"} == {("storage_8", "relation", "southwest_of", ("master_room_1",))}
+    # still a position when the corner is the plan's
+    assert ("storage_8", "position", "southwest", ()) in facts("The storage is in the southwest corner.", rooms)
+
+
+def test_a_room_inset_at_a_corner_is_placed_there() -> None:
+    text = "The living room is at the northwest corner, with the master room inset at the south west corner, and the kitchen to the south."
+    assert facts(text) == {
+        ("living_room_0", "position", "northwest", ()),
+        ("master_room_1", "position", "southwest", ()),
+        ("kitchen_2", "relation", "south_of", ("living_room_0",)),
+    }

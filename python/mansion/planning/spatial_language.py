@@ -433,6 +433,9 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
     ("with the R1 at the D:northwest corner"); each piece with whether it came from such a list."""
     cuts = [m.start(2) for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
             if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
+        # "is in the R1's D:southwest corner": a part of another room, not a new description
+        and not (m.group(1) in ("in", "at", "on", "into", "inside", "within")
+                 and re.match(r"(?:the\s+)?R\d+(?:\s*'?s|\s+rooms?)?\s+D:\w+\s+" + _OWN_PART, m.group(2) + sentence[m.end(2):]))
         # "the 11x5 bathroom is ...": a size in front of the room is not the end of a description
         and not re.search(r"\b(?:the|a|an)\s+[\d.x*'\"]+\s*$", sentence[: m.start(2)])]
     # a request's list of rooms: "a clinic with a pharmacy on the east side, and a cafe in ..."
@@ -467,6 +470,8 @@ def _plain(text: str, mentions: list[RoomMention]) -> str:
 
 # -- the grammar of one clause ------------------------------------------------------------------
 
+#: Words for a part of a room: "the R1's D:southwest corner", "its D:north side".
+_OWN_PART = r"(?:corner|side|part|portion|end|half|area|section|edge)\b"
 _ROOMS = r"R\d+(?:\s*(?:,|and|&|as well as|plus)\s*(?:the\s+)?R\d+)*"
 _ROOMSEQ = re.compile(r"R(\d+)")
 _D = r"D:(\w+)"
@@ -502,6 +507,19 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         used.append((m.start(), m.end()))
         out.append(Statement(subject=subj, kind=kind, text=_plain(m.group(0), mentions), **kw))  # type: ignore[arg-type]
 
+    # 0. A part of another room or a room set into a corner:
+    # - a part of another room, "in the R1's D:southwest corner": the subject lies toward that
+    #   side of it (a store in the corner of a bedroom);
+    for m in re.finditer(r"\b(?:in|at|on|into|inside|within)\s+(?:the\s+)?(R\d+)(?:\s*'?s|\s+rooms?)?\s+D:(\w+)\s+" + _OWN_PART, text):
+        others = rooms_in(m.group(1))
+        if others and m.group(2) != "centre":
+            add("relation", m, relation=_relation(m.group(2)), others=others)
+    # - another room set into a corner, "with the R1 inset at the D:southwest corner": its position;
+    for m in re.finditer(r"(R\d+)\s+(?:is\s+|being\s+)?(?:inset|tucked|set)\s+(?:in|at|into)\s+(?:the\s+)?D:(\w+)", text):
+        others = rooms_in(m.group(1))
+        if others and free(m.start(), m.end()):
+            used.append((m.start(), m.end()))
+            out.extend(Statement(subject=o, kind="position", direction=m.group(2), text=_plain(m.group(0), mentions)) for o in others)
     # 1. "between R1 and R2"
     for m in re.finditer(r"\b(?:in\s+)?between\s+(?:the\s+)?(" + _ROOMS + ")", text):
         others = rooms_in(m.group(1))
@@ -604,6 +622,24 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         word = m.group(1)
         across = bool(re.match(r"across|opposite|facing|faces|in\s+front|overlook", word))
         add("relation", m, relation="across_from" if across else "next_to", others=others)
+
+    # 6a. Compass words left that are not where the subject is (after the relations, which
+    # read "R1 on its D:right side"):
+    # - a direction of extent, "the long side running D:north to D:south", "extends from D:east
+    #   to D:west": how the room lies, not where;
+    # - a part of the subject itself, "its D:northwest corner", "a small portion in the D:northeast
+    #   corner", "extensions to the D:west and D:east": where its notches or bays are.
+    for pattern in (
+        r"(?:\b(?:from|running|runs|run|runing|oriented|extends?|extending|stretch(?:es|ing)?|goes|going|spans?|spanning)\s+(?:\w+\s+){0,2}?)"
+        r"D:\w+\s*(?:to|-|through|towards?)\s*(?:the\s+)?D:\w+",
+        r"\b(?:its|it's|their|his|her)\s+(?:own\s+)?" + _DD + r"\s+" + _OWN_PART,
+        r"\b(?:(?:small|little|tiny|narrow)\s+(?:portions?|parts?|spaces?|areas?|sections?)|extensions?|alcoves?|nooks?"
+        r"|knock\s*outs?|notch(?:es)?|cut\s*outs?)\b"
+        r"(?:\s+(?:\w+|,)){0,4}?\s+" + _DD,
+    ):
+        for m in re.finditer(pattern, text):
+            if free(m.start(), m.end()):
+                used.append((m.start(), m.end()))
 
     # 6. Positions of the subject in the plan: whatever compass word is left.
     rest = list(text)
