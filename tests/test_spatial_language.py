@@ -141,6 +141,10 @@ def test_rooms_relative_to_the_subject() -> None:
         ("The kitchen is adjacent to the living room.", "next_to"),
         ("The kitchen is across from the living room.", "across_from"),
         ("The kitchen is opposite to the living room.", "across_from"),
+        ("The kitchen is located near by the living room.", "next_to"),
+        ("The kitchen is touching the living room.", "next_to"),
+        ("The kitchen is conected with the living room.", "next_to"),
+        ("The kitchen is accessible by the living room.", "next_to"),
     ],
 )
 def test_relations_to_another_room(sentence: str, relation: str) -> None:
@@ -553,3 +557,20 @@ def test_a_room_inset_at_a_corner_is_placed_there() -> None:
         ("master_room_1", "position", "southwest", ()),
         ("kitchen_2", "relation", "south_of", ("living_room_0",)),
     }
+
+
+@pytest.mark.parametrize(
+    ("sentence", "fact"),
+    [
+        ("In the northeast corner is the kitchen.", ("kitchen_2", "position", "northeast", ())),
+        ("The south corner of the house has a balcony.", ("balcony_5", "position", "south", ())),
+        ("On the west side of the house you will find the master room.", ("master_room_1", "position", "west", ())),
+        ("Located at the top right is the kitchen.", ("kitchen_2", "position", "northeast", ())),
+        ("In the north is the kitchen, next to the bathroom.", ("kitchen_2", "position", "north", ())),
+    ],
+)
+def test_a_place_then_the_room_there(sentence: str, fact: tuple[str, str, str, tuple[str, ...]]) -> None:
+    # after another room's sentence, the place is the named room's, not the previous subject's
+    found = facts("The living room is in the middle. " + sentence)
+    assert fact in found
+    assert {f for f in found if f[0] == "living_room_0"} == {("living_room_0", "position", "centre", ())}

@@ -308,6 +308,18 @@ _PLACE = (
     r"(?:house|home|plan|floor\s*plan|floorplan|floor|apartment|unit|layout|diagram|image|plane|"
     r"building|flat|property|structure|space|map|picture|drawing|residence|dwelling|design|level|storey)"
 )
+#: A clause that opens with a place of the plan and names the room there after a verb: "in the
+#: D:northeast corner is the R2", "the D:south corner of the house has a R5", "on the D:west side
+#: of the house you will find the R1", "located at the D:northeast is the R2". A bare "to the
+#: D:north is the R2" stays a relation to the previous subject (it is said of that room).
+_INVERTED = re.compile(
+    r"^\s*(?P<verb>(?:located|situated|placed|positioned)\s+)?(?P<prep>in|on|at|towards?|to|)\s*(?:the\s+)?(?:(?:very|far)\s+)?"
+    r"(?:D:\w+(?:\s*(?:and|-|/)\s*D:\w+)*)"
+    r"(?P<part>\s+(?:corner|side|part|portion|end|area|section|half|quadrant|wing|edge|region))?"
+    r"(?P<place>\s+(?:of|in)\s+(?:the\s+)?" + _PLACE + r")?"
+    r"\s*,?\s*(?:is|are|has|have|holds|contains|lies|sits|stands|comes|you\s+will\s+find|you'll\s+find|we\s+find|"
+    r"there\s+is|there\s+are|we\s+have|you\s+have)\s+(?:also\s+)?(?:the\s+|a\s+|an\s+|one\s+)?R(?P<room>\d+)\b"
+)
 _PART = r"(?:corner|side|part|portion|end|area|region|section|half|quadrant|edge|zone|location|most|direction|wing|face|facing|quarter)"
 _VERB_AFTER_SUBJECT = re.compile(
     r"^\s*(?:is|are|was|lies|sits|located|situated|placed|positioned|can|could|has|have|takes|"
@@ -324,9 +336,10 @@ class _Clause:
 
 
 def _split_sentences(text: str) -> list[str]:
-    # A full stop ends a sentence unless it is inside a number ("5.5") or an abbreviation ("ft.").
+    # A full stop ends a sentence unless it is inside a number ("5.5") or an abbreviation ("ft.",
+    # "10 ft. in length"; "... the middle. In the north ..." is a new sentence).
     parts = re.split(
-        r"(?<!\d)\.(?!\d)(?!\s*(?:by|x|wide|long|deep|tall|high|in|and|or|\d)\b)|(?<=\d)\.(?!\d)|[;!?\n]+", text
+        r"(?<!\d)\.(?!\d)(?!\s*(?:by|x|wide|long|deep|tall|high|in\b(?!\s+the\b)|and|or|\d)\b)|(?<=\d)\.(?!\d)|[;!?\n]+", text
     )
     return [p.strip() for p in parts if p and p.strip(" ,")]
 
@@ -377,6 +390,15 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
             dangling = re.match(r"\s*(?:[a-z]+ing|located|situated|placed|positioned|set|tucked)\b[^,]*,\s*(?:the\s+|a\s+|an\s+)?R(\d+)\b", piece)
             if dangling:
                 subject = int(dangling.group(1))
+                clauses.append(_Clause(piece, piece, subject))
+                continue
+            # "In the D:northeast corner is the R2", "The D:south corner of the house has a R5":
+            # a place of the plan, then the room that is there
+            inverted = _INVERTED.match(piece)
+            if inverted and (
+                inverted.group("part") or inverted.group("place") or inverted.group("verb") or inverted.group("prep") == "in"
+            ):
+                subject = int(inverted.group("room"))
                 clauses.append(_Clause(piece, piece, subject))
                 continue
             lead = piece[: first.start()] if first else ""
@@ -608,9 +630,9 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
 
     # 5. Other adjacency words: next to, near, adjacent, beside, across from, opposite, facing.
     adjacency = (
-        r"\b(next\s+to|nearby|near\s+to|near|adjacent\s+to|adjacent|adjoining|adjoined\s+by|adjoins|beside|by\s+the\s+side\s+of|"
-        r"bordered\s+by|borders|neighbou?red\s+by|shares\s+(?:a\s+)?walls?\s+with|connects?\s+(?:to|with)|connected\s+to|"
-        r"attached\s+to|access(?:ed|ible)?\s+(?:from|through|via)|opens?\s+(?:in)?to|entrance\s+from|accessible\s+from|"
+        r"\b(next\s+to|nearby|near\s+by|near\s+to|near|adjacent\s+to|adjacent|adjoining|adjoined\s+by|adjoins|beside|by\s+the\s+side\s+of|"
+        r"bordered\s+by|borders|neighbou?red\s+by|shares\s+(?:a\s+)?walls?\s+with|conn?ects?\s+(?:to|with)|conn?ected\s+(?:to|with)|"
+        r"attached\s+to|access(?:ed|ible)?\s+(?:from|through|via|by)|touching|opens?\s+(?:in)?to|entrance\s+from|accessible\s+from|"
         r"leads?\s+(?:in)?to|surrounded\s+by|joined\s+to|joins|touches|meets|along\s+with|after|en\s*suite\s+to|"
         r"across\s+from|opposite(?:\s+(?:to|of))?|facing|faces|in\s+front\s+of|overlooks?)"
         r"(?:\s+(?:the|both|all|a|an))*\s+(" + _ROOMS + ")"
