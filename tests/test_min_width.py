@@ -202,6 +202,13 @@ def test_a_round_that_cannot_meet_its_widths_is_cut_again_with_them_lowered() ->
     for room in layout.rooms:
         # lowered to 1.0 m, not dropped: no part narrower than an agent's passage
         assert narrow_area(Polygon(room.polygon, room.holes), 1.0) < SLACK, room.id
+    # each relaxed round says the width its rules fell to, and its rooms keep it
+    assert all(r.relaxed_width is None for r in layout.diagnostics.rounds if not r.widths_relaxed)
+    for r in relaxed:
+        assert r.relaxed_width is not None and 1.0 <= r.relaxed_width < 2.0
+        for room in layout.rooms:
+            if room.id in (r.parent, *r.children):
+                assert narrow_area(Polygon(room.polygon, room.holes), r.relaxed_width) < SLACK, room.id
 
 
 def test_a_strict_budget_lowers_the_rules_only_once_backtracking_is_spent() -> None:

@@ -87,6 +87,7 @@ LAYOUT_JSON: dict[str, Any] = {
                 "retry": 0,
                 "fallback": False,
                 "widths_relaxed": False,
+                "relaxed_width": None,
                 "candidates": 100,
                 "rejected": {"topology": 12, "disconnected": 3},
                 "energy": {

@@ -203,6 +203,9 @@ pub struct RoundOut {
     /// then to [`RELAXED_WIDTH`]) for this round.
     #[serde(default)]
     pub widths_relaxed: bool,
+    /// The clear width (m) the round's rules were lowered to when `widths_relaxed`.
+    #[serde(default)]
+    pub relaxed_width: Option<f64>,
     pub candidates: usize,
     pub rejected: BTreeMap<String, usize>,
     pub energy: EnergyOut,
@@ -955,6 +958,7 @@ pub fn solve_floor(
             steps.push(passage);
         }
         let mut widths_relaxed = false;
+        let mut relaxed_width: Option<f64> = None;
         let mut result = result;
         for (k, &cap) in steps.iter().enumerate() {
             let Err(e) = result else { break };
@@ -967,6 +971,9 @@ pub fn solve_floor(
             let sub = stream + ((2 + k as u64) << 32);
             result = cut::cut(&grid, &floor.walls, &spec, &narrow, n, sub).map_err(|_| e);
             widths_relaxed = result.is_ok();
+            if widths_relaxed {
+                relaxed_width = Some(cap as f64 * opts.cell_size);
+            }
         }
         let outcome = match result {
             Ok(o) => o,
@@ -1017,6 +1024,7 @@ pub fn solve_floor(
             retry: outcome.retry,
             fallback: outcome.fallback,
             widths_relaxed,
+            relaxed_width,
             candidates: outcome.candidates,
             rejected: outcome.rejected,
             energy: EnergyOut {

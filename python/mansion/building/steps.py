@@ -229,7 +229,7 @@ def _solve(
             errors.append(f"attempt {attempt + 1}: {exc}")
             continue
         relax += [
-            f"minimum clear widths lowered to {RELAXED_CLEAR_WIDTH:g} m while cutting {r.parent!r}"
+            f"minimum clear widths lowered to {r.relaxed_width or RELAXED_CLEAR_WIDTH:g} m while cutting {r.parent!r}"
             for r in layout.diagnostics.rounds if r.widths_relaxed
         ]
         return layout, g, fp, rng_seed, attempt + 1, relax

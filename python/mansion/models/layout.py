@@ -158,6 +158,11 @@ class RoundDiagnostics(BaseModel):
         description="No candidate met the round's width rules; for this round only they were "
         "lowered to the floor-wide rule, then to 1.0 m (an agent still passes).",
     )
+    relaxed_width: float | None = Field(
+        default=None,
+        description="The clear width (m) the round's width rules were lowered to, when "
+        "``widths_relaxed``.",
+    )
     candidates: int = Field(description="Candidates grown in this round, over all retries.")
     rejected: dict[str, int] = Field(
         default_factory=dict, description="Candidates rejected, by reason."
