@@ -421,11 +421,12 @@ def solve_building_floor(
         # 0.1 → 1.2 %, for 4.1 → 2.6 % below area).
         unfit = unfit_rooms(layout.rooms, graph)
         fewer, dropped = leave_out(planned, unfit) if unfit else (planned, [])
+        # a third of the candidates per retry: with rooms out the floor has area to spare, and
+        # the full batch cost the hundred 1.4 times its generation time
+        quick = {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
+        shape = misshapen(layout.rooms) if dropped else (0, 0)  # the layout the new ones must match
         for k in range(RESOLVE_SEEDS if dropped else 0):
             try:
-                # a third of the candidates per retry: with rooms out the floor has area to
-                # spare, and the full batch cost the hundred 1.4 times its generation time
-                quick = {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
                 # the floor's own seed first, then others of its own
                 again_seed = seed if k == 0 else derived_seed(seed, "again", k)
                 again = _solve(index, fewer, footprint, None, again_seed, quick, drop_widths, only=attempts - 1)
@@ -434,7 +435,7 @@ def solve_building_floor(
             if (
                 again is not None
                 and len(unfit_rooms(again[0].rooms, again[1])) < len(unfit)
-                and all(a <= b for a, b in zip(misshapen(again[0].rooms), misshapen(layout.rooms)))
+                and all(a <= b for a, b in zip(misshapen(again[0].rooms), shape))
             ):
                 layout, graph, fp, rng_seed, attempts, relax = again
                 left_out = [*left_out, *dropped]
