@@ -31,6 +31,7 @@ from typing import Any
 from shapely.geometry import Polygon
 
 from mansion.building.checks import check_building
+from mansion.building.merge import merge_unfit_rooms
 from mansion.building.load_bearing import (
     SkeletonSeedPlanner,
     carry_walls,
@@ -440,6 +441,15 @@ def solve_building_floor(
                 layout, graph, fp, rng_seed, attempts, relax = again
                 left_out = [*left_out, *dropped]
                 break
+    merged: list[str] = []
+    if repairs:
+        # What laying the floor out again could not mend (floors that carry walls, layouts
+        # refused, rooms a floor cannot leave out) is merged into a neighbour, within one
+        # first-round region where walls are carried (mansion.building.merge)
+        layout, graph, merged = merge_unfit_rooms(
+            layout, graph, lambda lay, g: unfit_rooms(lay.rooms, g), program.building_type,
+            same_region=program.load_bearing_walls,
+        )
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
@@ -450,7 +460,7 @@ def solve_building_floor(
     return Floor(
         index=index, graph=graph, footprint=fp, layout=layout,
         room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
-        relaxations=[*floor_program.relaxations, *left_out, *relax],
+        relaxations=[*floor_program.relaxations, *left_out, *relax, *merged],
         carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
         position_words=words,
     )

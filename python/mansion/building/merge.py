@@ -1,0 +1,295 @@
+"""Rooms merged into a neighbour: the last step for a floor still too tight for a room (issue 14).
+
+A floor whose layout leaves a room below its minimum area or without a usable square is first
+laid out again without the rooms it can spare (:func:`mansion.building.steps.leave_out`). What
+that cannot mend (floors that carry walls are never laid out again; a layout laid out again may be
+refused; the rooms may be ones a floor cannot leave out) an architect mends by merging: the room
+becomes part of the room next to it, as a design table's program "drops, merges or moves rooms,
+never shrinks a room below its minimum". Examples from the offline hundred: a toilet lobby of
+2.2 m² becomes part of the concourse its WCs now open onto; a 6 m² private office becomes
+part of the open office it was cut from; two wards of 6 and 12 m² become one ward; a WC
+becomes part of the accessible toilet beside it, which then holds its turning square.
+
+Two rooms merge only when
+
+- one of them (the room that goes) can go: it is neither the floor's hub nor a core; circulation
+  merges only with circulation (a toilet lobby becomes part of a corridor, a ward never does);
+  of two rooms of different types, the one that goes is the smaller and, unless both are
+  circulation, not the last of its type on the floor;
+  and a room that comes with a bathroom of its own (a ward, a guest room) keeps it;
+- they are close in the cut tree: siblings cut from one region, or a room and the region it was
+  cut from, which then takes it (never a region into a room cut from it, a ward into its
+  ensuite), so a merge never joins two flats or two wings; on a floor whose walls carry the floor
+  above (or stand on the floor below) both sit in one first-round region, so no carried wall
+  moves;
+- they share a door's width of wall, and the merged room, judged as the room that stays, is no
+  worse than the better of the two: it has none of ``mansion eval realism``'s defects (elongated,
+  a sliver, below its clear width, no usable square) that either of them lacked.
+
+Of the merges allowed, a room of the same type is preferred (two small wards become one), then
+the region the room was cut from (a private office into its open office), then any sibling, and
+among those the smallest merged room.
+
+The room that stays keeps its id and type; the other's doors and rooms (a ward's ensuite, a
+lobby's toilets) pass to it, so every door of the floor still has its wall. Each merge is
+recorded in the floor's ``relaxations``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+from shapely.geometry import Polygon
+
+from mansion import _core
+from mansion.building.load_bearing import cut_parents, first_round_groups
+from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
+from mansion.models.layout import Adjacency, FloorLayout, LabelGrid, LayoutRoom
+from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
+from mansion.models.room_shape import EPS, box_aspect, fits_square, mostly_narrower
+
+__all__ = ["DOOR_WIDTH", "grid_adjacencies", "merge_unfit_rooms", "shape_defects"]
+
+#: Shared wall (m) two rooms need to be merged: a door's width, as ``mansion eval realism`` asks
+#: of two rooms it counts as connected.
+DOOR_WIDTH = 0.9
+#: Side (m) of the square a usable room holds (``mansion eval realism``'s "no 1 m square").
+USABLE_SIDE = 1.0
+
+
+def grid_adjacencies(labels: np.ndarray, ids: list[str], cell: float) -> list[Adjacency]:
+    """Every pair of rooms of a label grid (row 0 at the bottom, negative: no room) sharing wall:
+    total and longest straight contact in metres, in the core's order (pairs by label)."""
+    acc: dict[tuple[int, int], list[int]] = {}
+
+    def scan(a: np.ndarray, b: np.ndarray) -> None:
+        # a and b: the labels either side of one line of cell edges, along the line
+        for line_a, line_b in zip(a, b):
+            prev, run = None, 0
+            for x, y in zip(line_a.tolist(), line_b.tolist()):
+                if x == y or x < 0 or y < 0:
+                    prev = None
+                    continue
+                key = (min(x, y), max(x, y))
+                run = run + 1 if prev == key else 1
+                prev = key
+                got = acc.setdefault(key, [0, 0])
+                got[0] += 1
+                got[1] = max(got[1], run)
+
+    scan(labels[:-1, :], labels[1:, :])  # edges between rows, along x
+    scan(labels[:, :-1].T, labels[:, 1:].T)  # edges between columns, along y
+    return [
+        Adjacency(a=ids[a], b=ids[b], contact=t * cell, longest=m * cell)
+        for (a, b), (t, m) in sorted(acc.items())
+    ]
+
+
+def shape_defects(shape: Polygon, room_type: str, min_width: float | None, building_type: str | None) -> set[str]:
+    """``mansion eval realism``'s defects of one room's shape: "elongated" (not circulation),
+    "sliver", "narrow" (below its clear width: the building's corridor width for circulation,
+    else ``min_width`` or the design table's) and "unusable" (no usable square)."""
+    design = room_design(room_type)
+    out: set[str] = set()
+    if not design.circulation and box_aspect(shape) > ELONGATED_ASPECT:
+        out.add("elongated")
+    if mostly_narrower(shape, USABLE_SIDE, inclusive=True):
+        out.add("sliver")
+    need = corridor_width(building_type) if design.circulation else (min_width or design.min_width)
+    if mostly_narrower(shape, need):
+        out.add("narrow")
+    if not fits_square(shape, USABLE_SIDE, inclusive=True):
+        out.add("unusable")
+    return out
+
+
+def _rooms_from_grid(
+    labels: np.ndarray, grid: LabelGrid, old: dict[str, LayoutRoom], targets: dict[str, float]
+) -> list[LayoutRoom]:
+    """The layout's rooms drawn again from ``labels``, as the core draws them (the largest piece
+    of each label, its area from its cells, its centroid the mean of its cells' centres)."""
+    (ox, oy), s = grid.origin, grid.cell_size
+    pieces: dict[int, tuple[float, list, list]] = {}
+    for k, ring, holes in _core.vectorise(labels.astype(np.int32)):
+        area = abs(Polygon(ring).area)
+        if k not in pieces or area > pieces[k][0]:
+            pieces[k] = (area, ring, holes)
+    # the cells' centres summed in the core's order (row by row, left to right) so a room the
+    # merge leaves alone keeps its centroid to the last bit
+    count: dict[int, int] = {}
+    sums: dict[int, list[float]] = {}
+    for r, row in enumerate(labels.tolist()):
+        cy = oy + (r + 0.5) * s
+        for c, k in enumerate(row):
+            if k < 0:
+                continue
+            acc = sums.setdefault(k, [0.0, 0.0])
+            acc[0] += ox + (c + 0.5) * s
+            acc[1] += cy
+            count[k] = count.get(k, 0) + 1
+    rooms: list[LayoutRoom] = []
+    for k, rid in enumerate(grid.ids):
+        if k not in pieces:
+            continue
+        n = count[k]
+        _, ring, holes = pieces[k]
+        cx, cy = sums[k][0] / n, sums[k][1] / n
+        room = old[rid]
+        rooms.append(room.model_copy(update={
+            "polygon": [(ox + x * s, oy + y * s) for x, y in ring],
+            "holes": [[(ox + x * s, oy + y * s) for x, y in h] for h in holes],
+            "area": n * s * s,
+            "target_area": targets.get(rid, room.target_area),
+            "centroid": (cx, cy),
+        }))
+    return rooms
+
+
+def _merged_graph(graph: RoomGraph, gone: str, stays: str) -> RoomGraph:
+    """``graph`` with room ``gone`` merged into ``stays``: its relations pass to ``stays`` (an
+    access relation wins over an adjacency to the same room)."""
+    edges: dict[frozenset[str], RoomEdge] = {}
+    for e in graph.edges:
+        a, b = (stays if e.source == gone else e.source), (stays if e.target == gone else e.target)
+        key = frozenset((a, b))
+        if a == b or (key in edges and edges[key].kind == "access"):
+            continue
+        edges[key] = RoomEdge(source=a, target=b, kind=e.kind)
+    nodes: list[RoomNode] = []
+    for n in graph.nodes:
+        if n.id == gone:
+            continue
+        if n.id == stays:
+            n = n.model_copy(update={"area": n.area + next(m.area for m in graph.nodes if m.id == gone)})
+        nodes.append(n)
+    return RoomGraph(
+        nodes=nodes,
+        edges=list(edges.values()),
+    )
+
+
+def _may_go(
+    gone: RoomNode,
+    stays: RoomNode,
+    graph: RoomGraph,
+    parent: dict[str, str],
+    count: dict[str, int],
+    rooms: dict[str, LayoutRoom],
+) -> bool:
+    """Whether ``gone`` may become part of ``stays`` (the rules of the module's docstring that
+    concern the two rooms' kinds)."""
+    if gone.id == graph.hub.id or gone.is_core or stays.is_core:
+        return False
+    circulation = room_design(gone.room_type).circulation
+    if circulation != room_design(stays.room_type).circulation:
+        return False
+    if parent.get(gone.id) == stays.id and room_design(stays.room_type).own_bathroom:
+        return False
+    if gone.room_type == stays.room_type:
+        return True
+    # of two types, the merged room is mostly the room that stays (a WC into the accessible toilet
+    # beside it; never a ward into a nurse station too small for its minimum)
+    if rooms[gone.id].area > rooms[stays.id].area:
+        return False
+    # circulation taken into circulation still serves: nothing of the program is lost
+    return circulation or count.get(gone.room_type, 0) >= 2
+
+
+def merge_unfit_rooms(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    unfit: Callable[[FloorLayout, RoomGraph], dict[str, str]],
+    building_type: str | None = None,
+    same_region: bool = False,
+) -> tuple[FloorLayout, RoomGraph, list[str]]:
+    """Merge each room ``unfit`` names (id → why) into a neighbour, or a neighbour into it, where
+    the module's rules allow; the smallest unfit room first, each time the merge whose merged room
+    is smallest. ``same_region``: only rooms of one first-round region merge (floors that carry
+    walls). Returns the layout, the graph and a relaxation note per merge."""
+    notes: list[str] = []
+    tried: set[str] = set()
+    while True:
+        bad = {r: why for r, why in unfit(layout, graph).items() if r not in tried}
+        if not bad:
+            return layout, graph, notes
+        rooms = {r.id: r for r in layout.rooms}
+        room = min(bad, key=lambda r: (rooms[r].area, r))
+        tried.add(room)
+        found = _best_merge(layout, graph, room, building_type, same_region)
+        if found is None:
+            continue
+        gone, stays, layout = found
+        graph = _merged_graph(graph, gone, stays)
+        notes.append(f"{gone} merged into {stays} ({room} {bad[room]})")
+        tried.discard(stays)
+
+
+def _best_merge(
+    layout: FloorLayout, graph: RoomGraph, room: str, building_type: str | None, same_region: bool
+) -> tuple[str, str, FloorLayout] | None:
+    """(room that goes, room that stays, the layout after) of the best merge for ``room``, or
+    None when no merge passes the rules."""
+    nodes = {n.id: n for n in graph.nodes}
+    parent = cut_parents(graph)
+    region = first_round_groups(graph) if same_region else {}
+    count: dict[str, int] = {}
+    for n in graph.nodes:
+        count[n.room_type] = count.get(n.room_type, 0) + 1
+    rooms = {r.id: r for r in layout.rooms}
+    labels = layout.grid.array()
+    index = {rid: k for k, rid in enumerate(layout.grid.ids)}
+    best: tuple[int, float, bool, str, str, np.ndarray] | None = None
+    for adj in layout.adjacencies:
+        if room not in (adj.a, adj.b) or adj.longest < DOOR_WIDTH - EPS:
+            continue
+        other = adj.b if adj.a == room else adj.a
+        if room not in nodes or other not in nodes:
+            continue
+        if same_region and region.get(room) != region.get(other):
+            continue
+        for gone, stays in ((room, other), (other, room)):
+            # siblings cut from one region, or a room into the region it was cut from (never a
+            # region into a room cut from it: a ward into its ensuite)
+            if parent.get(gone) not in (parent.get(stays), stays):
+                continue
+            if not _may_go(nodes[gone], nodes[stays], graph, parent, count, rooms):
+                continue
+            keep, lose = rooms[stays], rooms[gone]
+            width = nodes[stays].min_width
+            union = Polygon(lose.polygon, lose.holes).union(Polygon(keep.polygon, keep.holes))
+            if union.geom_type != "Polygon":
+                continue
+            # judged as the room that stays, against the better of the two: a defect both had
+            # may remain, none either lacked may appear
+            after = shape_defects(union, keep.room_type, width, building_type)
+            if after and not after <= (
+                shape_defects(Polygon(keep.polygon, keep.holes), keep.room_type, width, building_type)
+                & shape_defects(Polygon(lose.polygon, lose.holes), keep.room_type, width, building_type)
+            ):
+                continue
+            merged = labels.copy()
+            merged[merged == index[gone]] = index[stays]
+            # a room of the same type first (two small wards become one), then the region it
+            # was cut from (a private office into its open office), then any sibling
+            rank = 0 if nodes[gone].room_type == nodes[stays].room_type else 1 if parent.get(gone) == stays else 2
+            # ... and the unfit room the one that goes, where both ways pass
+            key = (rank, union.area, gone != room, gone, stays)
+            if best is None or key < best[:5]:
+                best = (rank, union.area, gone != room, gone, stays, merged)
+    if best is None:
+        return None
+    *_, gone, stays, merged = best
+    ids = [rid for rid in layout.grid.ids if rid != gone]
+    remap = np.full(len(layout.grid.ids) + 1, -1, dtype=np.int64)
+    for k, rid in enumerate(layout.grid.ids):
+        remap[k] = ids.index(rid) if rid != gone else -1
+    relabelled = np.where(merged >= 0, remap[np.clip(merged, 0, None)], merged).astype(np.int32)
+    grid = layout.grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
+    targets = {stays: rooms[stays].target_area + rooms[gone].target_area}
+    new = layout.model_copy(update={
+        "rooms": _rooms_from_grid(relabelled, grid, rooms, targets),
+        "grid": grid,
+        "adjacencies": grid_adjacencies(relabelled, ids, grid.cell_size),
+    })
+    return gone, stays, new
