@@ -184,6 +184,45 @@ CCCCCCCCCCCCCCCC
     assert set(unfit(merged, fewer)) == {"office_1"}
 
 
+def test_of_two_types_the_less_demanding_room_goes() -> None:
+    # A, an accessible toilet of 2.25 m² (its minimum 3.3 m²) beside T, a WC of 3 m²: the WC goes
+    # into it (a WC asks less; the floor keeps a WC, U). N, a nurse station of 4 m² (its minimum
+    # 6 m²) between two wards: no ward goes into it (a ward is larger and asks more), and the only
+    # nurse station stays
+    picture = """
+......WWWWWWWW....VVVVVVVV...
+......WWWWWWWW....VVVVVVVV...
+......WWWWWWWW....VVVVVVVV...
+......WWWWWWWW....VVVVVVVV...
+......WWWWWWWW....VVVVVVVV...
+......WWWWWWWW....VVVVVVVV...
+...TTTWWWWWWWWNNNNVVVVVVVVUUU
+AAATTTWWWWWWWWNNNNVVVVVVVVUUU
+AAATTTWWWWWWWWNNNNVVVVVVVVUUU
+AAATTTWWWWWWWWNNNNVVVVVVVVUUU
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "A": ("accessible_toilet", "area", "accessible_toilet", 3.3),
+        "T": ("toilet_1", "area", "toilet", 2.5),
+        "U": ("toilet_2", "area", "toilet", 2.5),
+        "W": ("ward_1", "area", "ward", 14.5),
+        "N": ("nurse_station", "area", "nurse_station", 6.0),
+        "V": ("ward_2", "area", "ward", 14.5),
+    }
+    layout = layout_of(picture, names)
+    graph = graph_of(names, [("corridor", v[0]) for k, v in names.items() if k != "C"])
+    assert set(unfit(layout, graph)) == {"accessible_toilet", "nurse_station"}
+    merged, fewer, notes = merge_unfit_rooms(layout, graph, unfit, "hospital")
+    assert notes == ["toilet_1 merged into accessible_toilet (accessible_toilet laid out at 2.2 m², below its 3.3 m² minimum)"]
+    assert merged.room("accessible_toilet").area == 5.25
+    assert set(unfit(merged, fewer)) == {"nurse_station"}
+
+
 @pytest.mark.parametrize("seed", [0, 3])
 def test_grid_adjacencies_are_the_cores(seed: int) -> None:
     """The merge measures shared walls as the solver does, to the last contact."""

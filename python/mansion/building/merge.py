@@ -14,8 +14,9 @@ Two rooms merge only when
 
 - one of them (the room that goes) can go: it is neither the floor's hub nor a core; circulation
   merges only with circulation (a toilet lobby becomes part of a corridor, a ward never does);
-  of two rooms of different types, the one that goes is the smaller and, unless both are
-  circulation, not the last of its type on the floor;
+  of two rooms of different types, the one that goes is the smaller or has the smaller minimum
+  area in the design table (a WC goes into an accessible toilet, a ward never into a nurse
+  station) and, unless both are circulation, is not the last of its type on the floor;
   and a room that comes with a bathroom of its own (a ward, a guest room) keeps it;
 - they are close in the cut tree: siblings cut from one region, or a room and the region it was
   cut from, which then takes it (never a region into a room cut from it, a ward into its
@@ -188,9 +189,10 @@ def _may_go(
         return False
     if gone.room_type == stays.room_type:
         return True
-    # of two types, the merged room is mostly the room that stays (a WC into the accessible toilet
-    # beside it; never a ward into a nurse station too small for its minimum)
-    if rooms[gone.id].area > rooms[stays.id].area:
+    # of two types, the room that goes is the smaller or the less demanding one (a WC into the
+    # accessible toilet beside it; never a ward into a nurse station too small for its minimum)
+    smaller = rooms[gone.id].area <= rooms[stays.id].area
+    if not smaller and room_design(gone.room_type).min_area > room_design(stays.room_type).min_area:
         return False
     # circulation taken into circulation still serves: nothing of the program is lost
     return circulation or count.get(gone.room_type, 0) >= 2

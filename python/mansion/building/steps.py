@@ -18,7 +18,9 @@ floor is laid out again (:func:`leave_out`). The new layout is kept when it leav
 unfit and no more elongated rooms or slivers (up to :data:`RESOLVE_SEEDS` layouts, each under
 its own seed, until one is), and each room left out is recorded on the
 floor ("ward_5 left out (with ward_5_ensuite): laid out at 7.5 m², below its 14.5 m² minimum";
-issue 14).
+issue 14). What that cannot mend (floors that carry walls, layouts refused, rooms the floor
+cannot spare) is merged into a neighbour where an architect would (:mod:`mansion.building.merge`:
+a toilet lobby into its corridor, a small ward into the ward beside it), also recorded.
 """
 
 from __future__ import annotations
