@@ -221,6 +221,10 @@ CCCCCCCCCCCCCCCCCCCCCCCCCCCCC
     assert notes == ["toilet_1 merged into accessible_toilet (accessible_toilet laid out at 2.2 m², below its 3.3 m² minimum)"]
     assert merged.room("accessible_toilet").area == 5.25
     assert set(unfit(merged, fewer)) == {"nurse_station"}
+    # with the other WC cut from ward_2, toilet_1 is the last WC of the corridor's rooms: it stays
+    edges = [("corridor", v[0]) for k, v in names.items() if k not in "CU"] + [("ward_2", "toilet_2")]
+    _, _, notes = merge_unfit_rooms(layout, graph_of(names, edges), unfit, "hospital")
+    assert notes == []
 
 
 @pytest.mark.parametrize("seed", [0, 3])

@@ -16,7 +16,8 @@ Two rooms merge only when
   merges only with circulation (a toilet lobby becomes part of a corridor, a ward never does);
   of two rooms of different types, the one that goes is the smaller or has the smaller minimum
   area in the design table (a WC goes into an accessible toilet, a ward never into a nurse
-  station) and, unless both are circulation, is not the last of its type on the floor;
+  station) and, unless both are circulation, is not the last of its type in the region it was
+  cut from (a flat keeps its bathroom where the floor has one per flat);
   and a room that comes with a bathroom of its own (a ward, a guest room) keeps it;
 - they are close in the cut tree: siblings cut from one region, or a room and the region it was
   cut from, which then takes it (never a region into a room cut from it, a ward into its
@@ -175,7 +176,7 @@ def _may_go(
     stays: RoomNode,
     graph: RoomGraph,
     parent: dict[str, str],
-    count: dict[str, int],
+    count: dict[tuple[str | None, str], int],
     rooms: dict[str, LayoutRoom],
 ) -> bool:
     """Whether ``gone`` may become part of ``stays`` (the rules of the module's docstring that
@@ -195,7 +196,7 @@ def _may_go(
     if not smaller and room_design(gone.room_type).min_area > room_design(stays.room_type).min_area:
         return False
     # circulation taken into circulation still serves: nothing of the program is lost
-    return circulation or count.get(gone.room_type, 0) >= 2
+    return circulation or count.get((parent.get(gone.id), gone.room_type), 0) >= 2
 
 
 def merge_unfit_rooms(
@@ -235,9 +236,12 @@ def _best_merge(
     nodes = {n.id: n for n in graph.nodes}
     parent = cut_parents(graph)
     region = first_round_groups(graph) if same_region else {}
-    count: dict[str, int] = {}
+    # rooms of each type per region they were cut from: a flat keeps its only bathroom even
+    # where the floor has one per flat
+    count: dict[tuple[str | None, str], int] = {}
     for n in graph.nodes:
-        count[n.room_type] = count.get(n.room_type, 0) + 1
+        key = (parent.get(n.id), n.room_type)
+        count[key] = count.get(key, 0) + 1
     rooms = {r.id: r for r in layout.rooms}
     labels = layout.grid.array()
     index = {rid: k for k, rid in enumerate(layout.grid.ids)}
