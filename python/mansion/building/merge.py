@@ -88,17 +88,17 @@ def grid_adjacencies(labels: np.ndarray, ids: list[str], cell: float) -> list[Ad
     ]
 
 
-def shape_defects(shape: Polygon, room_type: str, min_width: float | None, building_type: str | None) -> set[str]:
+def shape_defects(shape: Polygon, room_type: str, building_type: str | None) -> set[str]:
     """``mansion eval realism``'s defects of one room's shape: "elongated" (not circulation),
     "sliver", "narrow" (below its clear width: the building's corridor width for circulation,
-    else ``min_width`` or the design table's) and "unusable" (no usable square)."""
+    else the design table's) and "unusable" (no usable square)."""
     design = room_design(room_type)
     out: set[str] = set()
     if not design.circulation and box_aspect(shape) > ELONGATED_ASPECT:
         out.add("elongated")
     if mostly_narrower(shape, USABLE_SIDE, inclusive=True):
         out.add("sliver")
-    need = corridor_width(building_type) if design.circulation else (min_width or design.min_width)
+    need = corridor_width(building_type) if design.circulation else design.min_width
     if mostly_narrower(shape, need):
         out.add("narrow")
     if not fits_square(shape, USABLE_SIDE, inclusive=True):
@@ -240,12 +240,10 @@ def _best_merge(
     # where the floor has one per flat
     count: dict[tuple[str | None, str], int] = {}
     for n in graph.nodes:
-        key = (parent.get(n.id), n.room_type)
-        count[key] = count.get(key, 0) + 1
+        group = (parent.get(n.id), n.room_type)
+        count[group] = count.get(group, 0) + 1
     rooms = {r.id: r for r in layout.rooms}
-    labels = layout.grid.array()
-    index = {rid: k for k, rid in enumerate(layout.grid.ids)}
-    best: tuple[int, float, bool, str, str, np.ndarray] | None = None
+    best: tuple[int, float, bool, str, str] | None = None
     for adj in layout.adjacencies:
         if room not in (adj.a, adj.b) or adj.longest < DOOR_WIDTH - EPS:
             continue
@@ -262,35 +260,34 @@ def _best_merge(
             if not _may_go(nodes[gone], nodes[stays], graph, parent, count, rooms):
                 continue
             keep, lose = rooms[stays], rooms[gone]
-            width = nodes[stays].min_width
             union = Polygon(lose.polygon, lose.holes).union(Polygon(keep.polygon, keep.holes))
             if union.geom_type != "Polygon":
                 continue
             # judged as the room that stays, against the better of the two: a defect both had
             # may remain, none either lacked may appear
-            after = shape_defects(union, keep.room_type, width, building_type)
+            kind = keep.room_type
+            after = shape_defects(union, kind, building_type)
             if after and not after <= (
-                shape_defects(Polygon(keep.polygon, keep.holes), keep.room_type, width, building_type)
-                & shape_defects(Polygon(lose.polygon, lose.holes), keep.room_type, width, building_type)
+                shape_defects(Polygon(keep.polygon, keep.holes), kind, building_type)
+                & shape_defects(Polygon(lose.polygon, lose.holes), kind, building_type)
             ):
                 continue
-            merged = labels.copy()
-            merged[merged == index[gone]] = index[stays]
             # a room of the same type first (two small wards become one), then the region it
-            # was cut from (a private office into its open office), then any sibling
-            rank = 0 if nodes[gone].room_type == nodes[stays].room_type else 1 if parent.get(gone) == stays else 2
-            # ... and the unfit room the one that goes, where both ways pass
+            # was cut from (a private office into its open office), then any sibling; the
+            # smallest merged room; the unfit room the one that goes, where both ways pass
+            rank = 0 if nodes[gone].room_type == kind else 1 if parent.get(gone) == stays else 2
             key = (rank, union.area, gone != room, gone, stays)
-            if best is None or key < best[:5]:
-                best = (rank, union.area, gone != room, gone, stays, merged)
+            if best is None or key < best:
+                best = key
     if best is None:
         return None
-    *_, gone, stays, merged = best
+    *_, gone, stays = best
     ids = [rid for rid in layout.grid.ids if rid != gone]
-    remap = np.full(len(layout.grid.ids) + 1, -1, dtype=np.int64)
-    for k, rid in enumerate(layout.grid.ids):
-        remap[k] = ids.index(rid) if rid != gone else -1
-    relabelled = np.where(merged >= 0, remap[np.clip(merged, 0, None)], merged).astype(np.int32)
+    # every label after the room that goes moves down by one; its cells take the other's label
+    labels = layout.grid.array()
+    k_gone, k_stays = layout.grid.ids.index(gone), layout.grid.ids.index(stays)
+    relabelled = np.where(labels == k_gone, k_stays, labels)
+    relabelled = np.where(relabelled > k_gone, relabelled - 1, relabelled).astype(np.int32)
     grid = layout.grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
     targets = {stays: rooms[stays].target_area + rooms[gone].target_area}
     new = layout.model_copy(update={
