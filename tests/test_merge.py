@@ -13,12 +13,12 @@ from mansion.models.layout import Diagnostics, FloorLayout, LabelGrid, LayoutRoo
 
 CELL = 0.5
 
-# Half-metre cells, the top line is the floor's far side. C corridor (the hub), A ward_1, B ward_2,
-# E ward_2's ensuite, D ward_3, N nurse station.
+# Half-metre cells, the top line is the floor's far side. C corridor (the hub), A ward_1, F its
+# ensuite, B ward_2, E its ensuite, D ward_3, N nurse station.
 WARDS = """
-AAAAAAAAEEEEDDDDDDDDNNNN
-AAAAAAAAEEEEDDDDDDDDNNNN
-AAAAAAAAEEEEDDDDDDDDNNNN
+FFFFAAAAEEEEDDDDDDDDNNNN
+FFFFAAAAEEEEDDDDDDDDNNNN
+FFFFAAAAEEEEDDDDDDDDNNNN
 AAAAAAAABBBBDDDDDDDDNNNN
 AAAAAAAABBBBDDDDDDDDNNNN
 AAAAAAAABBBBDDDDDDDDNNNN
@@ -34,6 +34,7 @@ CCCCCCCCCCCCCCCCCCCCCCCC
 NAMES = {
     "C": ("corridor", "main", "corridor", 4.0),
     "A": ("ward_1", "area", "ward", 14.5),
+    "F": ("ward_1_ensuite", "area", "ensuite", 3.0),
     "B": ("ward_2", "area", "ward", 14.5),
     "E": ("ward_2_ensuite", "area", "ensuite", 3.0),
     "D": ("ward_3", "area", "ward", 14.5),
@@ -78,7 +79,7 @@ def graph_of(names: dict[str, tuple[str, str, str, float]], edges: list[tuple[st
 
 WARD_EDGES = [
     ("corridor", "ward_1"), ("corridor", "ward_2"), ("corridor", "ward_3"), ("corridor", "nurse_station"),
-    ("ward_2", "ward_2_ensuite"),
+    ("ward_1", "ward_1_ensuite"), ("ward_2", "ward_2_ensuite"),
 ]
 
 
@@ -86,30 +87,34 @@ def unfit(layout: FloorLayout, graph: RoomGraph) -> dict[str, str]:
     return unfit_rooms(layout.rooms, graph)
 
 
-def test_a_small_ward_becomes_part_of_the_ward_beside_it_and_hands_it_its_ensuite() -> None:
+def test_a_small_ward_becomes_part_of_the_ward_beside_it_its_ensuite_with_it() -> None:
     layout, graph = layout_of(WARDS, NAMES), graph_of(NAMES, WARD_EDGES)
     assert unfit(layout, graph) == {"ward_2": "laid out at 7.0 m², below its 14.5 m² minimum"}
     merged, fewer, notes = merge_unfit_rooms(layout, graph, unfit, "hospital")
-    # ward_1 and ward_3 would both make a 6 m × 5 m ward; the first by name is taken
-    assert notes == ["ward_2 merged into ward_1 (ward_2 laid out at 7.0 m², below its 14.5 m² minimum)"]
-    assert "ward_2" not in {n.id for n in fewer.nodes} | {r.id for r in merged.rooms} | set(merged.grid.ids)
-    # its door to the corridor and its ensuite pass to ward_1, and the floor still reaches all
+    # ward_1 (17 m²) makes a 27 m² ward, ward_3 (20 m²) a 30 m² one; the merged ward keeps one
+    # bathroom, ward_1's own
+    assert notes == [
+        "ward_2 merged into ward_1 with ward_2_ensuite (ward_2 laid out at 7.0 m², below its 14.5 m² minimum)"
+    ]
+    gone = {"ward_2", "ward_2_ensuite"}
+    assert not gone & ({n.id for n in fewer.nodes} | {r.id for r in merged.rooms} | set(merged.grid.ids))
+    # its door to the corridor passes to ward_1, and the floor still reaches every room
     pairs = {frozenset((e.source, e.target)): e.kind for e in fewer.edges}
-    assert pairs[frozenset(("ward_1", "ward_2_ensuite"))] == "access"
-    assert frozenset(("corridor", "ward_2")) not in pairs
+    assert set(pairs) == {
+        frozenset(p) for p in [("corridor", "ward_1"), ("corridor", "ward_3"), ("corridor", "nurse_station"),
+                               ("ward_1", "ward_1_ensuite")]
+    }
     check_graph(fewer, "floor 0")
     ward = merged.room("ward_1")
     assert ward.area == 27.0 and ward.target_area == 27.0
-    assert next(n for n in fewer.nodes if n.id == "ward_1").area == 40.0
-    # its side (1.5 m) as before, and ward_2's wall to it (2 m)
-    assert merged.adjacency("ward_1", "ward_2_ensuite").contact == 3.5  # type: ignore[union-attr]
+    assert next(n for n in fewer.nodes if n.id == "ward_1").area == 60.0
+    assert merged.adjacency("corridor", "ward_1").longest == 6.0  # type: ignore[union-attr]
     assert merged.adjacencies == grid_adjacencies(merged.grid.array(), merged.grid.ids, CELL)
-    # every other room is drawn as it was, and nothing is unfit any more
-    before = {r.id: r for r in layout.rooms}
     # every other room keeps its cells (its outline may lose a corner where its neighbour changed)
+    before = {r.id: r for r in layout.rooms}
     after = np.array(merged.grid.ids)[merged.grid.array()]
     was = np.array(layout.grid.ids)[layout.grid.array()]
-    assert (after == np.where(was == "ward_2", "ward_1", was)).all()
+    assert (after == np.where(np.isin(was, list(gone)), "ward_1", was)).all()
     for r in merged.rooms:
         if r.id != "ward_1":
             assert r.area == before[r.id].area and r.centroid == pytest.approx(before[r.id].centroid)
@@ -136,7 +141,7 @@ CCCCCCCCCCCCCCCCCCCC
 CCCCCCCCCCCCCCCCCCCC
 CCCCCCCCCCCCCCCCCCCC
 """
-    names = {k: v for k, v in NAMES.items() if k != "N"}
+    names = {k: v for k, v in NAMES.items() if k not in "NF"}
     edges = [("corridor", "ward_1"), ("corridor", "ward_2"), ("corridor", "ward_3"), ("ward_2", "ward_2_ensuite")]
     layout, graph = layout_of(picture, names), graph_of(names, edges)
     assert set(unfit(layout, graph)) == {"ward_2_ensuite", "ward_3"}

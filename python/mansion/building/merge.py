@@ -32,9 +32,10 @@ Of the merges allowed, a room of the same type is preferred (two small wards bec
 the region the room was cut from (a private office into its open office), then any sibling, and
 among those the smallest merged room.
 
-The room that stays keeps its id and type; the other's doors and rooms (a ward's ensuite, a
-lobby's toilets) pass to it, so every door of the floor still has its wall. Each merge is
-recorded in the floor's ``relaxations``.
+The room that stays keeps its id and type; the other's doors and rooms (a lobby's WCs) pass to
+it, so every door of the floor still has its wall. A room with a bathroom of its own takes it
+along (a ward merged into the ward beside it: its ensuite becomes part of the room too, and the
+merged ward keeps one ensuite, its own). Each merge is recorded in the floor's ``relaxations``.
 """
 
 from __future__ import annotations
@@ -43,6 +44,7 @@ from collections.abc import Callable
 
 import numpy as np
 from shapely.geometry import Polygon
+from shapely.ops import unary_union
 
 from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
@@ -222,17 +224,21 @@ def merge_unfit_rooms(
         found = _best_merge(layout, graph, room, building_type, same_region)
         if found is None:
             continue
-        gone, stays, layout = found
-        graph = _merged_graph(graph, gone, stays)
-        notes.append(f"{gone} merged into {stays} ({room} {bad[room]})")
+        gone, stays = found
+        for rid in gone:
+            layout = _merged_layout(layout, rid, stays)
+            graph = _merged_graph(graph, rid, stays)
+        also = f" with {', '.join(gone[1:])}" if len(gone) > 1 else ""
+        notes.append(f"{gone[0]} merged into {stays}{also} ({room} {bad[room]})")
         tried.discard(stays)
 
 
 def _best_merge(
     layout: FloorLayout, graph: RoomGraph, room: str, building_type: str | None, same_region: bool
-) -> tuple[str, str, FloorLayout] | None:
-    """(room that goes, room that stays, the layout after) of the best merge for ``room``, or
-    None when no merge passes the rules."""
+) -> tuple[list[str], str] | None:
+    """(the rooms that go, the room that stays) of the best merge for ``room``, or None when no
+    merge passes the rules. A room with a bathroom of its own takes it along: the merged room
+    keeps one bathroom, its own."""
     nodes = {n.id: n for n in graph.nodes}
     parent = cut_parents(graph)
     region = first_round_groups(graph) if same_region else {}
@@ -242,8 +248,11 @@ def _best_merge(
     for n in graph.nodes:
         group = (parent.get(n.id), n.room_type)
         count[group] = count.get(group, 0) + 1
+    children: dict[str, list[str]] = {}
+    for kid, up in parent.items():
+        children.setdefault(up, []).append(kid)
     rooms = {r.id: r for r in layout.rooms}
-    best: tuple[int, float, bool, str, str] | None = None
+    best: tuple[int, float, bool, list[str], str] | None = None
     for adj in layout.adjacencies:
         if room not in (adj.a, adj.b) or adj.longest < DOOR_WIDTH - EPS:
             continue
@@ -260,7 +269,10 @@ def _best_merge(
             if not _may_go(nodes[gone], nodes[stays], graph, parent, count, rooms):
                 continue
             keep, lose = rooms[stays], rooms[gone]
-            union = Polygon(lose.polygon, lose.holes).union(Polygon(keep.polygon, keep.holes))
+            own = children.get(gone, []) if room_design(nodes[gone].room_type).own_bathroom else []
+            if any(r not in rooms or children.get(r) for r in own):
+                continue
+            union = unary_union([Polygon(r.polygon, r.holes) for r in (keep, lose, *(rooms[o] for o in own))])
             if union.geom_type != "Polygon":
                 continue
             # judged as the room that stays, against the better of the two: a defect both had
@@ -276,12 +288,17 @@ def _best_merge(
             # was cut from (a private office into its open office), then any sibling; the
             # smallest merged room; the unfit room the one that goes, where both ways pass
             rank = 0 if nodes[gone].room_type == kind else 1 if parent.get(gone) == stays else 2
-            key = (rank, union.area, gone != room, gone, stays)
+            key = (rank, union.area, gone != room, [gone, *own], stays)
             if best is None or key < best:
                 best = key
     if best is None:
         return None
-    *_, gone, stays = best
+    return best[3], best[4]
+
+
+def _merged_layout(layout: FloorLayout, gone: str, stays: str) -> FloorLayout:
+    """``layout`` with room ``gone``'s cells given to ``stays``, drawn again."""
+    rooms = {r.id: r for r in layout.rooms}
     ids = [rid for rid in layout.grid.ids if rid != gone]
     # every label after the room that goes moves down by one; its cells take the other's label
     labels = layout.grid.array()
@@ -290,9 +307,8 @@ def _best_merge(
     relabelled = np.where(relabelled > k_gone, relabelled - 1, relabelled).astype(np.int32)
     grid = layout.grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
     targets = {stays: rooms[stays].target_area + rooms[gone].target_area}
-    new = layout.model_copy(update={
+    return layout.model_copy(update={
         "rooms": _rooms_from_grid(relabelled, grid, rooms, targets),
         "grid": grid,
         "adjacencies": grid_adjacencies(relabelled, ids, grid.cell_size),
     })
-    return gone, stays, new
