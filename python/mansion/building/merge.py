@@ -4,11 +4,11 @@ A floor whose layout leaves a room below its minimum area or without a usable sq
 laid out again without the rooms it can spare (:func:`mansion.building.steps.leave_out`). What
 that cannot mend (floors that carry walls are never laid out again; a layout laid out again may be
 refused; the rooms may be ones a floor cannot leave out) an architect mends by merging: the room
-becomes part of the room next to it, as a design table's program "drops, merges or moves rooms,
-never shrinks a room below its minimum". Examples from the offline hundred: a toilet lobby of
-2.2 m² becomes part of the concourse its WCs now open onto; a 6 m² private office becomes
-part of the open office it was cut from; two wards of 6 and 12 m² become one ward; a WC
-becomes part of the accessible toilet beside it, which then holds its turning square.
+becomes part of the room next to it (a program that does not fit "drops, merges or moves rooms,
+never shrinks a room below its minimum", issue 14). Examples from the offline hundred: a toilet
+lobby of 2.2 m² becomes part of the concourse its WCs now open onto; a 6 m² private office
+becomes part of the open office it was cut from; two small wards become one ward; a WC becomes
+part of the accessible toilet beside it, which then holds a usable square.
 
 Two rooms merge only when
 
@@ -17,8 +17,8 @@ Two rooms merge only when
   of two rooms of different types, the one that goes is the smaller or has the smaller minimum
   area in the design table (a WC goes into an accessible toilet, a ward never into a nurse
   station) and, unless both are circulation, is not the last of its type in the region it was
-  cut from (a flat keeps its bathroom where the floor has one per flat);
-  and a room that comes with a bathroom of its own (a ward, a guest room) keeps it;
+  cut from (a flat keeps its bathroom where the floor has one per flat); a room that comes with
+  a bathroom of its own (a ward, a guest room) keeps it;
 - they are close in the cut tree: siblings cut from one region, or a room and the region it was
   cut from, which then takes it (never a region into a room cut from it, a ward into its
   ensuite), so a merge never joins two flats or two wings; on a floor whose walls carry the floor
@@ -53,12 +53,13 @@ from mansion.models.layout import Adjacency, FloorLayout, LabelGrid, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
 from mansion.models.room_shape import EPS, box_aspect, fits_square, mostly_narrower
 
-__all__ = ["DOOR_WIDTH", "grid_adjacencies", "merge_unfit_rooms", "shape_defects"]
+__all__ = ["DOOR_WIDTH", "USABLE_SIDE", "grid_adjacencies", "merge_unfit_rooms", "shape_defects"]
 
 #: Shared wall (m) two rooms need to be merged: a door's width, as ``mansion eval realism`` asks
 #: of two rooms it counts as connected.
 DOOR_WIDTH = 0.9
-#: Side (m) of the square a usable room holds (``mansion eval realism``'s "no 1 m square").
+#: Side of the square a usable room holds, metres: ``mansion eval realism``'s "no 1 m square"
+#: (a square a hair over 1 m, three cells of the 0.5 m grid).
 USABLE_SIDE = 1.0
 
 

@@ -33,7 +33,6 @@ from typing import Any
 from shapely.geometry import Polygon
 
 from mansion.building.checks import check_building
-from mansion.building.merge import merge_unfit_rooms
 from mansion.building.load_bearing import (
     SkeletonSeedPlanner,
     carry_walls,
@@ -43,6 +42,7 @@ from mansion.building.load_bearing import (
     first_round_walls,
     retarget_first_round,
 )
+from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
@@ -251,10 +251,6 @@ RESOLVE_DIVISOR = 3
 #: layout -> three: below area 82 -> 73 rooms, below width 12.52 -> 12.39 %; seeds 100-199:
 #: below area 106 -> 82, no 1 m square 31 -> 22, slivers 38 -> 29 (README, "Room widths").
 RESOLVE_SEEDS = 3
-
-#: Side of the square a usable room holds, metres: ``mansion eval realism``'s "no 1 m square"
-#: (a square a hair over 1 m, three cells of the 0.5 m grid).
-USABLE_SIDE = 1.0
 
 
 def unfit_rooms(rooms: Iterable[LayoutRoom], graph: RoomGraph) -> dict[str, str]:
