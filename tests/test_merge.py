@@ -232,6 +232,43 @@ CCCCCCCCCCCCCCCCCCCCCCCCCCCCC
     assert notes == []
 
 
+def test_a_sanitary_room_never_merges_with_another_kind_and_asked_for_rooms_never_go() -> None:
+    # S, a bathroom of 3 m² (its minimum 3.5 m²), 1 m wide, beside R, a bedroom: together they
+    # would make a 5 m × 3 m room, but a bathroom never becomes part of a bedroom
+    picture = """
+SSRRRRRRRRUUUU
+SSRRRRRRRRUUUU
+SSRRRRRRRRUUUU
+SSRRRRRRRRUUUU
+SSRRRRRRRRUUUU
+SSRRRRRRRRUUUU
+CCCCCCCCCCCCCC
+CCCCCCCCCCCCCC
+CCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("hall", "main", "hallway", 2.5),
+        "S": ("bathroom_1", "area", "bathroom", 3.5),
+        "R": ("bedroom_1", "area", "bedroom", 7.5),
+        "U": ("bathroom_2", "area", "bathroom", 3.5),
+    }
+    layout = layout_of(picture, names)
+    graph = graph_of(names, [("hall", "bathroom_1"), ("hall", "bedroom_1"), ("hall", "bathroom_2")])
+    assert set(unfit(layout, graph)) == {"bathroom_1"}
+    _, _, notes = merge_unfit_rooms(layout, graph, unfit, "villa")
+    assert notes == []
+    # a bathroom beside it goes into it; unless the description asked for that bathroom
+    names["R"] = ("bathroom_3", "area", "bathroom", 3.5)
+    layout = layout_of(picture, names)
+    graph = graph_of(names, [("hall", "bathroom_1"), ("hall", "bathroom_3"), ("hall", "bathroom_2")])
+    _, _, notes = merge_unfit_rooms(layout, graph, unfit, "villa")
+    assert [n.split(" (")[0] for n in notes] == ["bathroom_1 merged into bathroom_3"]
+    _, _, notes = merge_unfit_rooms(layout, graph, unfit, "villa", keep={"bathroom_1"})
+    assert [n.split(" (")[0] for n in notes] == ["bathroom_3 merged into bathroom_1"]
+    _, _, notes = merge_unfit_rooms(layout, graph, unfit, "villa", keep={"bathroom_1", "bathroom_3"})
+    assert notes == []
+
+
 @pytest.mark.parametrize("seed", [0, 3])
 def test_grid_adjacencies_are_the_cores(seed: int) -> None:
     """The merge measures shared walls as the solver does, to the last contact."""

@@ -16,9 +16,11 @@ Two rooms merge only when
   merges only with circulation (a toilet lobby becomes part of a corridor, a ward never does);
   of two rooms of different types, the one that goes is the smaller or has the smaller minimum
   area in the design table (a WC goes into an accessible toilet, a ward never into a nurse
-  station) and, unless both are circulation, is not the last of its type in the region it was
-  cut from (a flat keeps its bathroom where the floor has one per flat); a room that comes with
-  a bathroom of its own (a ward, a guest room) keeps it;
+  station), both are sanitary or neither is (a bathroom never becomes part of a bedroom), and
+  unless both are circulation the one that goes is not the last of its type in the region it
+  was cut from (a flat keeps its bathroom where the floor has one per flat); a room that comes
+  with a bathroom of its own (a ward, a guest room) keeps it; a room the description asked for
+  never goes;
 - they are close in the cut tree: siblings cut from one region, or a room and the region it was
   cut from, which then takes it (never a region into a room cut from it, a ward into its
   ensuite), so a merge never joins two flats or two wings; on a floor whose walls carry the floor
@@ -40,7 +42,7 @@ merged ward keeps one ensuite, its own). Each merge is recorded in the floor's `
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 from shapely.geometry import Polygon
@@ -50,7 +52,7 @@ from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import Adjacency, FloorLayout, LabelGrid, LayoutRoom
-from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
+from mansion.models.room_design import ELONGATED_ASPECT, SANITARY_TYPES, corridor_width, design_key, room_design
 from mansion.models.room_shape import EPS, box_aspect, fits_square, mostly_narrower
 
 __all__ = ["DOOR_WIDTH", "USABLE_SIDE", "grid_adjacencies", "merge_unfit_rooms", "shape_defects"]
@@ -181,6 +183,7 @@ def _may_go(
     parent: dict[str, str],
     count: dict[tuple[str | None, str], int],
     rooms: dict[str, LayoutRoom],
+    keep: frozenset[str],
 ) -> bool:
     """Whether ``gone`` may become part of ``stays`` (the rules of the module's docstring that
     concern the two rooms' kinds)."""
@@ -191,8 +194,12 @@ def _may_go(
         return False
     if parent.get(gone.id) == stays.id and room_design(stays.room_type).own_bathroom:
         return False
+    if gone.id in keep:
+        return False
     if gone.room_type == stays.room_type:
         return True
+    if (design_key(gone.room_type) in SANITARY_TYPES) != (design_key(stays.room_type) in SANITARY_TYPES):
+        return False
     # of two types, the room that goes is the smaller or the less demanding one (a WC into the
     # accessible toilet beside it; never a ward into a nurse station too small for its minimum)
     smaller = rooms[gone.id].area <= rooms[stays.id].area
@@ -208,11 +215,14 @@ def merge_unfit_rooms(
     unfit: Callable[[FloorLayout, RoomGraph], dict[str, str]],
     building_type: str | None = None,
     same_region: bool = False,
+    keep: Iterable[str] = (),
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """Merge each room ``unfit`` names (id → why) into a neighbour, or a neighbour into it, where
     the module's rules allow; the smallest unfit room first, each time the merge whose merged room
     is smallest. ``same_region``: only rooms of one first-round region merge (floors that carry
-    walls). Returns the layout, the graph and a relaxation note per merge."""
+    walls). ``keep``: rooms that may take others in but never go (the rooms a description asked
+    for). Returns the layout, the graph and a relaxation note per merge."""
+    kept = frozenset(keep)
     notes: list[str] = []
     tried: set[str] = set()
     while True:
@@ -222,7 +232,7 @@ def merge_unfit_rooms(
         rooms = {r.id: r for r in layout.rooms}
         room = min(bad, key=lambda r: (rooms[r].area, r))
         tried.add(room)
-        found = _best_merge(layout, graph, room, building_type, same_region)
+        found = _best_merge(layout, graph, room, building_type, same_region, kept)
         if found is None:
             continue
         gone, stays = found
@@ -235,7 +245,12 @@ def merge_unfit_rooms(
 
 
 def _best_merge(
-    layout: FloorLayout, graph: RoomGraph, room: str, building_type: str | None, same_region: bool
+    layout: FloorLayout,
+    graph: RoomGraph,
+    room: str,
+    building_type: str | None,
+    same_region: bool,
+    keep: frozenset[str],
 ) -> tuple[list[str], str] | None:
     """(the rooms that go, the room that stays) of the best merge for ``room``, or None when no
     merge passes the rules. A room with a bathroom of its own takes it along: the merged room
@@ -267,22 +282,22 @@ def _best_merge(
             # region into a room cut from it: a ward into its ensuite)
             if parent.get(gone) not in (parent.get(stays), stays):
                 continue
-            if not _may_go(nodes[gone], nodes[stays], graph, parent, count, rooms):
+            if not _may_go(nodes[gone], nodes[stays], graph, parent, count, rooms, keep):
                 continue
-            keep, lose = rooms[stays], rooms[gone]
+            held, lost = rooms[stays], rooms[gone]
             own = children.get(gone, []) if room_design(nodes[gone].room_type).own_bathroom else []
-            if any(r not in rooms or children.get(r) for r in own):
+            if any(r not in rooms or children.get(r) or r in keep for r in own):
                 continue
-            union = unary_union([Polygon(r.polygon, r.holes) for r in (keep, lose, *(rooms[o] for o in own))])
+            union = unary_union([Polygon(r.polygon, r.holes) for r in (held, lost, *(rooms[o] for o in own))])
             if union.geom_type != "Polygon":
                 continue
             # judged as the room that stays, against the better of the two: a defect both had
             # may remain, none either lacked may appear
-            kind = keep.room_type
+            kind = held.room_type
             after = shape_defects(union, kind, building_type)
             if after and not after <= (
-                shape_defects(Polygon(keep.polygon, keep.holes), kind, building_type)
-                & shape_defects(Polygon(lose.polygon, lose.holes), kind, building_type)
+                shape_defects(Polygon(held.polygon, held.holes), kind, building_type)
+                & shape_defects(Polygon(lost.polygon, lost.holes), kind, building_type)
             ):
                 continue
             # a room of the same type first (two small wards become one), then the region it

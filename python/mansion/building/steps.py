@@ -444,9 +444,10 @@ def solve_building_floor(
         # What laying the floor out again could not mend (floors that carry walls, layouts
         # refused, rooms a floor cannot leave out) is merged into a neighbour, within one
         # first-round region where walls are carried (mansion.building.merge)
+        asked = {i for r in program.requests if r.honoured for i in r.room_ids}
         layout, graph, merged = merge_unfit_rooms(
             layout, graph, lambda lay, g: unfit_rooms(lay.rooms, g), program.building_type,
-            same_region=program.load_bearing_walls,
+            same_region=program.load_bearing_walls, keep=asked,
         )
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []

@@ -59,6 +59,7 @@ __all__ = [
     "ELONGATED_ASPECT",
     "ROOM_DESIGN",
     "RoomDesign",
+    "SANITARY_TYPES",
     "corridor_width",
     "design_key",
     "room_design",
@@ -260,6 +261,11 @@ DEFAULT_CORRIDOR_WIDTH = 1.5
 #: atrium is circulation too, but has widths of its own).
 CORRIDOR_TYPES: frozenset[str] = frozenset(
     {"corridor", "ward_corridor", "hallway", "landing", "entrance_hall", "back_of_house"}
+)
+#: Room types that are sanitary (plumbed, washed down, tiled): a sanitary room is never made part
+#: of another kind of room, nor another kind of room part of it (``mansion.building.merge``).
+SANITARY_TYPES: frozenset[str] = frozenset(
+    {"bathroom", "ensuite", "wc", "toilet", "accessible_toilet", "washroom", "changing_room"}
 )
 
 #: Other names of table entries (after normalisation).
