@@ -269,6 +269,40 @@ CCCCCCCCCCCCCC
     assert notes == []
 
 
+def test_a_room_goes_into_the_region_it_was_cut_from_when_the_floor_has_another_of_its_type() -> None:
+    # two flats off a hall: K, flat 1's kitchen of 4.5 m² (its minimum 5.5 m²), becomes part of
+    # flat 1's living room (an open kitchen), as flat 2 has a kitchen, J; never part of flat 2
+    picture = """
+LLLLLLLLLLKKKMMMMMMMMMMJJJJ
+LLLLLLLLLLKKKMMMMMMMMMMJJJJ
+LLLLLLLLLLKKKMMMMMMMMMMJJJJ
+LLLLLLLLLLKKKMMMMMMMMMMJJJJ
+LLLLLLLLLLKKKMMMMMMMMMMJJJJ
+LLLLLLLLLLKKKMMMMMMMMMMJJJJ
+CCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("hall", "main", "corridor", 4.0),
+        "L": ("flat_1", "area", "unit_living", 13.0),
+        "K": ("kitchen_1", "area", "kitchen", 5.5),
+        "M": ("flat_2", "area", "unit_living", 13.0),
+        "J": ("kitchen_2", "area", "kitchen", 5.5),
+    }
+    edges = [("hall", "flat_1"), ("flat_1", "kitchen_1"), ("hall", "flat_2"), ("flat_2", "kitchen_2")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    assert set(unfit(layout, graph)) == {"kitchen_1"}
+    _, fewer, notes = merge_unfit_rooms(layout, graph, unfit, "apartment_block")
+    assert [n.split(" (")[0] for n in notes] == ["kitchen_1 merged into flat_1"]
+    assert "kitchen_1" not in {n.id for n in fewer.nodes}
+    # the floor's only kitchen stays, however small
+    names["J"] = ("store_2", "area", "storage", 2.0)
+    edges[-1] = ("flat_2", "store_2")
+    _, _, notes = merge_unfit_rooms(layout_of(picture, names), graph_of(names, edges), unfit, "apartment_block")
+    assert notes == []
+
+
 @pytest.mark.parametrize("seed", [0, 3])
 def test_grid_adjacencies_are_the_cores(seed: int) -> None:
     """The merge measures shared walls as the solver does, to the last contact."""
