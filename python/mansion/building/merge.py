@@ -17,10 +17,8 @@ Two rooms merge only when
   of two rooms of different types, the one that goes is the smaller or has the smaller minimum
   area in the design table (a WC goes into an accessible toilet, a ward never into a nurse
   station), both are sanitary or neither is (a bathroom never becomes part of a bedroom), and
-  unless both are circulation the one that goes is not the last of its type: in the region it
-  was cut from when it goes into a sibling, on the floor when it goes into that region (a flat's
-  kitchen of 4.5 m² becomes an open kitchen in its living room where other flats keep theirs;
-  a flat's bathroom never goes, being sanitary); a room that comes
+  unless both are circulation the one that goes is not the last of its type in the region it
+  was cut from (a flat keeps its bathroom where the floor has one per flat); a room that comes
   with a bathroom of its own (a ward, a guest room) keeps it; a room the description asked for
   never goes;
 - they are close in the cut tree: siblings cut from one region, or a room and the region it was
@@ -208,12 +206,7 @@ def _may_go(
     if not smaller and room_design(gone.room_type).min_area > room_design(stays.room_type).min_area:
         return False
     # circulation taken into circulation still serves: nothing of the program is lost
-    if circulation:
-        return True
-    if parent.get(gone.id) == stays.id:
-        # a room taken into the region it was cut from: one of its type may stay elsewhere on the floor
-        return sum(v for (_, t), v in count.items() if t == gone.room_type) >= 2
-    return count.get((parent.get(gone.id), gone.room_type), 0) >= 2
+    return circulation or count.get((parent.get(gone.id), gone.room_type), 0) >= 2
 
 
 def merge_unfit_rooms(
