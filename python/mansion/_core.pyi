@@ -6,7 +6,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "grow_candidates", "place_room", "place_rooms"]
+__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "adjacencies", "grow_candidates", "place_room", "place_rooms"]
 
 __version__: str
 
@@ -33,6 +33,10 @@ def vectorise(
     labels: npt.NDArray[np.int32],
 ) -> list[tuple[int, list[tuple[int, int]], list[list[tuple[int, int]]]]]:
     """(label, outer ring, holes) for each label >= 0 of an int32 grid, in grid vertices."""
+
+def adjacencies(labels: npt.NDArray[np.int32]) -> list[tuple[int, int, int, int]]:
+    """(label a, label b, shared cell edges, longest straight run of them), a < b, for each pair
+    of labels >= 0 of an int32 grid sharing a wall, as the solver measures a layout's."""
 
 def grow_candidates(
     labels: npt.NDArray[np.int32],

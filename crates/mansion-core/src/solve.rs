@@ -1214,7 +1214,20 @@ fn output(floor: &Floor, padded: &Grid) -> Solution {
 
 /// Every pair of rooms sharing a wall, with total and longest straight contact in metres.
 pub fn adjacencies(grid: &Grid, names: &[String], cell: f64) -> Vec<AdjacencyOut> {
-    let n = names.len();
+    label_adjacencies(grid, names.len())
+        .into_iter()
+        .map(|(a, b, t, l)| AdjacencyOut {
+            a: names[a as usize].clone(),
+            b: names[b as usize].clone(),
+            contact: t as f64 * cell,
+            longest: l as f64 * cell,
+        })
+        .collect()
+}
+
+/// Every pair of labels below `n` sharing a wall, in label order: (a, b, shared cell edges, the
+/// longest straight run of them).
+pub fn label_adjacencies(grid: &Grid, n: usize) -> Vec<(Label, Label, u32, u32)> {
     let mut acc: BTreeMap<(Label, Label), (u32, u32)> = BTreeMap::new();
     let mut scan = |pairs: &mut dyn Iterator<Item = Vec<(Label, Label)>>| {
         for line in pairs {
@@ -1246,12 +1259,7 @@ pub fn adjacencies(grid: &Grid, names: &[String], cell: f64) -> Vec<AdjacencyOut
             .collect()
     }));
     acc.into_iter()
-        .map(|((a, b), (t, l))| AdjacencyOut {
-            a: names[a as usize].clone(),
-            b: names[b as usize].clone(),
-            contact: t as f64 * cell,
-            longest: l as f64 * cell,
-        })
+        .map(|((a, b), (t, l))| (a, b, t, l))
         .collect()
 }
 

@@ -11,7 +11,7 @@ use mansion_core::place::{
 use mansion_core::raster::{rasterise as core_rasterise, FootprintSpec};
 use mansion_core::region::{pad, unpad};
 use mansion_core::seedplan::{request_json, HeuristicPlanner, SeedPlan, SeedPlanner, SeedRequest};
-use mansion_core::solve::{solve_floor as core_solve, GraphSpec, SolveOptions};
+use mansion_core::solve::{label_adjacencies, solve_floor as core_solve, GraphSpec, SolveOptions};
 use mansion_core::vectorise::{
     mask_outline as core_mask_outline, vectorise as core_vectorise, Ring,
 };
@@ -210,6 +210,23 @@ fn vectorise(
         .collect())
 }
 
+/// The shared walls of a label grid (row 0 at the bottom; negative = no room), as the solver
+/// measures a layout's: (label a, label b, shared cell edges, longest straight run of them), a < b.
+#[pyfunction]
+fn adjacencies(
+    py: Python<'_>,
+    labels: PyReadonlyArray2<'_, i32>,
+) -> PyResult<Vec<(i64, i64, u32, u32)>> {
+    let g = grid_from(&labels)?;
+    let pairs = guarded(py, move || {
+        Ok(label_adjacencies(&g, mansion_core::grid::MAX_ROOMS))
+    })?;
+    Ok(pairs
+        .into_iter()
+        .map(|(a, b, t, l)| (a as i64, b as i64, t, l))
+        .collect())
+}
+
 /// The growth stage of `batch` candidates (grow, then spur removal and hole filling), for
 /// benchmarks: `labels` int32 (rows, cols), row 0 bottom, -1 outside; the cells equal to `region`
 /// are cut into `len(targets)` rooms labelled after the largest label present, seeded around
@@ -352,6 +369,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(rasterise, m)?)?;
     m.add_function(wrap_pyfunction!(mask_outline, m)?)?;
     m.add_function(wrap_pyfunction!(vectorise, m)?)?;
+    m.add_function(wrap_pyfunction!(adjacencies, m)?)?;
     m.add_function(wrap_pyfunction!(grow_candidates, m)?)?;
     m.add_function(wrap_pyfunction!(place_room, m)?)?;
     m.add_function(wrap_pyfunction!(place_rooms, m)?)?;

@@ -67,29 +67,11 @@ USABLE_SIDE = 1.0
 
 def grid_adjacencies(labels: np.ndarray, ids: list[str], cell: float) -> list[Adjacency]:
     """Every pair of rooms of a label grid (row 0 at the bottom, negative: no room) sharing wall:
-    total and longest straight contact in metres, in the core's order (pairs by label)."""
-    acc: dict[tuple[int, int], list[int]] = {}
-
-    def scan(a: np.ndarray, b: np.ndarray) -> None:
-        # a and b: the labels either side of one line of cell edges, along the line
-        for line_a, line_b in zip(a, b):
-            prev, run = None, 0
-            for x, y in zip(line_a.tolist(), line_b.tolist()):
-                if x == y or x < 0 or y < 0:
-                    prev = None
-                    continue
-                key = (min(x, y), max(x, y))
-                run = run + 1 if prev == key else 1
-                prev = key
-                got = acc.setdefault(key, [0, 0])
-                got[0] += 1
-                got[1] = max(got[1], run)
-
-    scan(labels[:-1, :], labels[1:, :])  # edges between rows, along x
-    scan(labels[:, :-1].T, labels[:, 1:].T)  # edges between columns, along y
+    total and longest straight contact in metres, measured by the core as it measures a solved
+    layout's, in its order."""
     return [
         Adjacency(a=ids[a], b=ids[b], contact=t * cell, longest=m * cell)
-        for (a, b), (t, m) in sorted(acc.items())
+        for a, b, t, m in _core.adjacencies(labels.astype(np.int32))
     ]
 
 
