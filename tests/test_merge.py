@@ -330,3 +330,88 @@ def test_generated_floors_merge_the_rooms_laying_out_again_could_not_mend() -> N
         assert gone not in {n.id for n in f.graph.nodes} | {r.id for r in f.layout.rooms}
     assert not [r for f in b.floors if f.copy_of is None for r in steps.unfit_rooms(f.layout.rooms, f.graph)
                 if r.startswith("toilets")]
+
+
+def test_a_room_no_merge_takes_is_dropped_into_its_open_office_never_into_a_smaller_kind() -> None:
+    # M, bay 1's only meeting room, 7.5 m² (its minimum 10 m²): no merge takes it (the last of
+    # its type in its bay), but the floor has another (N, in bay 2), so it is dropped and its
+    # floor goes to bay 1's open office, not to the phone booth P beside it
+    picture = """
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+OOOOOOOOOOOOOOOOMMMPPPQQQQQQQQQQQQNNNNNNN
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "O": ("bay_1", "area", "open_office", 30.0),
+        "M": ("meeting_room_1", "area", "meeting_room", 10.0),
+        "P": ("phone_booth", "area", "phone_booth", 1.5),
+        "Q": ("bay_2", "area", "open_office", 30.0),
+        "N": ("meeting_room_2", "area", "meeting_room", 10.0),
+    }
+    edges = [
+        ("corridor", "bay_1"), ("bay_1", "meeting_room_1"), ("bay_1", "phone_booth"),
+        ("corridor", "bay_2"), ("bay_2", "meeting_room_2"),
+    ]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    assert set(unfit(layout, graph)) == {"meeting_room_1"}
+    merged, after, notes = merge_unfit_rooms(layout, graph, unfit, "office")
+    assert [n.split(" (")[0] for n in notes] == ["meeting_room_1 dropped, its floor given to bay_1"]
+    assert "meeting_room_1" not in {n.id for n in after.nodes} | {r.id for r in merged.rooms}
+    bay = next(r for r in merged.rooms if r.id == "bay_1")
+    assert bay.room_type == "open_office" and bay.area == pytest.approx(40.0 + 7.5)
+    assert unfit(merged, after) == {}
+    check_graph(after, "floor 0")
+    # the floor's only meeting room stays, unfit
+    alone = {**names, "N": ("print_room", "area", "print_room", 3.5)}
+    edges_alone = [("print_room", "bay_2") if "meeting_room_2" in e else e for e in edges]
+    _, _, notes = merge_unfit_rooms(layout_of(picture, alone), graph_of(alone, edges_alone), unfit, "office")
+    assert notes == []
+    # with bay 1 a store, no room beside it is a large enough kind to take its floor
+    store = {**names, "O": ("bay_1", "area", "storage", 2.0)}
+    _, _, notes = merge_unfit_rooms(layout_of(picture, store), graph_of(store, edges), unfit, "office")
+    assert notes == []
+
+
+def test_a_flat_may_lose_a_second_bedroom_never_its_only_one() -> None:
+    # B, a bedroom of 6 m² (its minimum 7.5 m²) in a flat with a master bedroom A: dropped, its
+    # floor to the flat's living room L; with A a study instead it is the flat's only bedroom
+    picture = """
+LLLLLLLLLLBBBAAAAAAAA
+LLLLLLLLLLBBBAAAAAAAA
+LLLLLLLLLLBBBAAAAAAAA
+LLLLLLLLLLBBBAAAAAAAA
+LLLLLLLLLLBBBAAAAAAAA
+LLLLLLLLLLBBBAAAAAAAA
+LLLLLLLLLLBBBAAAAAAAA
+LLLLLLLLLLBBBAAAAAAAA
+CCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "L": ("flat_1", "area", "unit_living", 13.0),
+        "B": ("bedroom_1", "area", "bedroom", 7.5),
+        "A": ("master_bedroom_1", "area", "master_bedroom", 11.5),
+    }
+    edges = [("corridor", "flat_1"), ("flat_1", "bedroom_1"), ("flat_1", "master_bedroom_1")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    assert set(unfit(layout, graph)) == {"bedroom_1"}
+    _, _, notes = merge_unfit_rooms(layout, graph, unfit, "apartment_block")
+    assert [n.split(" (")[0] for n in notes] == ["bedroom_1 dropped, its floor given to flat_1"]
+    study = {**names, "A": ("study_1", "area", "study", 6.5)}
+    edges = [("corridor", "flat_1"), ("flat_1", "bedroom_1"), ("flat_1", "study_1")]
+    _, _, notes = merge_unfit_rooms(layout_of(picture, study), graph_of(study, edges), unfit, "apartment_block")
+    assert notes == []

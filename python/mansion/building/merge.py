@@ -38,6 +38,15 @@ The room that stays keeps its id and type; the other's doors and rooms (a lobby'
 it, so every door of the floor still has its wall. A room with a bathroom of its own takes it
 along (a ward merged into the ward beside it: its ensuite becomes part of the room too, and the
 merged ward keeps one ensuite, its own). Each merge is recorded in the floor's ``relaxations``.
+
+A room no merge takes is dropped where the program can do without it (:func:`_may_drop`): its floor
+goes to a neighbour, which keeps its own type (a 7 m² meeting room, the last of its bay but not
+of the floor, becomes part of its open office: "meeting_room_3 dropped, its floor given to
+bay_3"; a flat's 4 m² second bedroom becomes part of its living room). A room a home needs goes
+only where its flat keeps another of its kind, never its only bedroom, kitchen or bathroom; the
+floor never goes to circulation (a corridor is planned, not what is left over) nor to a smaller
+kind of room (a meeting room never makes a phone booth its size). The same cut-tree, region and
+shape rules hold as for a merge.
 """
 
 from __future__ import annotations
@@ -55,7 +64,9 @@ from mansion.models.layout import Adjacency, FloorLayout, LabelGrid, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, SANITARY_TYPES, corridor_width, design_key, room_design
 from mansion.models.room_shape import EPS, box_aspect, fits_square, mostly_narrower
 
-__all__ = ["DOOR_WIDTH", "USABLE_SIDE", "grid_adjacencies", "merge_unfit_rooms", "shape_defects"]
+__all__ = [
+    "DOOR_WIDTH", "USABLE_SIDE", "grid_adjacencies", "merge_unfit_rooms", "rooms_from_grid", "shape_defects",
+]
 
 #: Shared wall (m) two rooms need to be merged: a door's width, as ``mansion eval realism`` asks
 #: of two rooms it counts as connected.
@@ -93,7 +104,7 @@ def shape_defects(shape: Polygon, room_type: str, building_type: str | None) -> 
     return out
 
 
-def _rooms_from_grid(
+def rooms_from_grid(
     labels: np.ndarray, grid: LabelGrid, old: dict[str, LayoutRoom], targets: dict[str, float]
 ) -> list[LayoutRoom]:
     """The layout's rooms drawn again from ``labels``, as the core draws them (the largest piece
@@ -191,6 +202,60 @@ def _may_go(
     return circulation or count.get((parent.get(gone.id), gone.room_type), 0) >= 2
 
 
+#: Kinds of room a home cannot do without: a room of one of these is dropped only where the
+#: region it was cut from (a flat) keeps another of its kind (a flat with two bedrooms may lose
+#: its second; a sanitary room's kind is its own type: the only accessible toilet stays).
+HOME_KINDS: dict[str, str] = {
+    **{t: "sleeping" for t in (
+        "master_bedroom", "master_room", "bedroom", "common_room", "children_room", "guest_bedroom",
+    )},
+    **{t: "kitchen" for t in ("kitchen", "kitchenette")},
+    **{t: "living" for t in ("living_room", "studio_room", "unit_living", "family_room")},
+    **{t: t for t in SANITARY_TYPES},
+}
+
+
+def _kind(room_type: str) -> str | None:
+    key = design_key(room_type)
+    return None if key is None else HOME_KINDS.get(key)
+
+
+def _may_drop(
+    gone: RoomNode,
+    stays: RoomNode,
+    graph: RoomGraph,
+    parent: dict[str, str],
+    keep: frozenset[str],
+) -> bool:
+    """Whether ``gone``, which no merge takes, may be dropped from the floor and its floor given
+    to ``stays``, which keeps its own type: a program that does not fit "drops, merges or moves
+    rooms" (issue 14). Only a room that is neither the hub, a core, circulation nor a room the
+    description asked for; a room a home needs (:data:`HOME_KINDS`) only where its region (its
+    flat) keeps another of its kind, any other only where the floor keeps another of its type
+    (as :func:`mansion.building.steps.leave_out` asks); and its floor never goes to a core, to circulation (a
+    corridor is planned, not what is left over), to a smaller kind of room (the table's minimum
+    area: a meeting room's floor never makes a phone booth its size) nor across the sanitary line
+    (a dropped bedroom never enlarges a bathroom)."""
+    if gone.id == graph.hub.id or gone.is_core or stays.is_core or gone.id in keep:
+        return False
+    # a corridor is planned, never what is left over (issue 14)
+    if room_design(gone.room_type).circulation or room_design(stays.room_type).circulation:
+        return False
+    if (design_key(gone.room_type) in SANITARY_TYPES) != (design_key(stays.room_type) in SANITARY_TYPES):
+        return False
+    # to a room at least as large a kind: a meeting room's floor to the open office, never to a
+    # phone booth that would become a room of its size
+    if room_design(stays.room_type).min_area < room_design(gone.room_type).min_area:
+        return False
+    kind = _kind(gone.room_type)
+    if kind is None:
+        return sum(n.room_type == gone.room_type for n in graph.nodes) >= 2
+    up = parent.get(gone.id)
+    return sum(
+        _kind(n.room_type) == kind for n in graph.nodes if n.id != gone.id and parent.get(n.id) == up
+    ) >= 1
+
+
 def merge_unfit_rooms(
     layout: FloorLayout,
     graph: RoomGraph,
@@ -215,6 +280,9 @@ def merge_unfit_rooms(
         room = min(bad, key=lambda r: (rooms[r].area, r))
         tried.add(room)
         found = _best_merge(layout, graph, room, building_type, same_region, kept)
+        dropped = found is None
+        if dropped:
+            found = _best_merge(layout, graph, room, building_type, same_region, kept, drop=True)
         if found is None:
             continue
         gone, stays = found
@@ -222,7 +290,10 @@ def merge_unfit_rooms(
             layout = _merged_layout(layout, rid, stays)
             graph = _merged_graph(graph, rid, stays)
         also = f" with {', '.join(gone[1:])}" if len(gone) > 1 else ""
-        notes.append(f"{gone[0]} merged into {stays}{also} ({room} {bad[room]})")
+        if dropped:
+            notes.append(f"{gone[0]} dropped{also}, its floor given to {stays} ({room} {bad[room]})")
+        else:
+            notes.append(f"{gone[0]} merged into {stays}{also} ({room} {bad[room]})")
         tried.discard(stays)
 
 
@@ -233,10 +304,12 @@ def _best_merge(
     building_type: str | None,
     same_region: bool,
     keep: frozenset[str],
+    drop: bool = False,
 ) -> tuple[list[str], str] | None:
     """(the rooms that go, the room that stays) of the best merge for ``room``, or None when no
     merge passes the rules. A room with a bathroom of its own takes it along: the merged room
-    keeps one bathroom, its own."""
+    keeps one bathroom, its own. ``drop``: ``room`` is dropped instead (:func:`_may_drop`), its
+    floor given to a neighbour of any kind that keeps its own."""
     nodes = {n.id: n for n in graph.nodes}
     parent = cut_parents(graph)
     region = first_round_groups(graph) if same_region else {}
@@ -259,16 +332,22 @@ def _best_merge(
             continue
         if same_region and region.get(room) != region.get(other):
             continue
-        for gone, stays in ((room, other), (other, room)):
+        for gone, stays in ((room, other),) if drop else ((room, other), (other, room)):
             # siblings cut from one region, or a room into the region it was cut from (never a
             # region into a room cut from it: a ward into its ensuite)
             if parent.get(gone) not in (parent.get(stays), stays):
                 continue
-            if not _may_go(nodes[gone], nodes[stays], graph, parent, count, rooms, keep):
+            if drop:
+                if not _may_drop(nodes[gone], nodes[stays], graph, parent, keep):
+                    continue
+            elif not _may_go(nodes[gone], nodes[stays], graph, parent, count, rooms, keep):
                 continue
             held, lost = rooms[stays], rooms[gone]
             own = children.get(gone, []) if room_design(nodes[gone].room_type).own_bathroom else []
             if any(r not in rooms or children.get(r) or r in keep for r in own):
+                continue
+            # a dropped room takes no region with it (a lobby's WCs, a flat's rooms)
+            if drop and any(r not in own for r in children.get(gone, [])):
                 continue
             union = unary_union([Polygon(r.polygon, r.holes) for r in (held, lost, *(rooms[o] for o in own))])
             if union.geom_type != "Polygon":
@@ -306,7 +385,7 @@ def _merged_layout(layout: FloorLayout, gone: str, stays: str) -> FloorLayout:
     grid = layout.grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
     targets = {stays: rooms[stays].target_area + rooms[gone].target_area}
     return layout.model_copy(update={
-        "rooms": _rooms_from_grid(relabelled, grid, rooms, targets),
+        "rooms": rooms_from_grid(relabelled, grid, rooms, targets),
         "grid": grid,
         "adjacencies": grid_adjacencies(relabelled, ids, grid.cell_size),
     })

@@ -19,8 +19,11 @@ unfit and no more elongated rooms or slivers (up to :data:`RESOLVE_SEEDS` layout
 its own seed, until one is), and each room left out is recorded on the
 floor ("ward_5 left out (with ward_5_ensuite): laid out at 7.5 m², below its 14.5 m² minimum";
 issue 14). What that cannot mend (floors that carry walls, layouts refused, rooms the floor
-cannot spare) is merged into a neighbour where an architect would (:mod:`mansion.building.merge`:
-a toilet lobby into its corridor, a small ward into the ward beside it), also recorded.
+cannot spare) is first cut again as a rectangle inside the region it was cut from
+(:mod:`mansion.building.recut`: a 2.2 m² bathroom inside its flat), then merged into a neighbour
+where an architect would, or dropped where the program can do without it
+(:mod:`mansion.building.merge`: a toilet lobby into its corridor, a small ward into the ward
+beside it, a flat's second bedroom into its living room), each recorded.
 """
 
 from __future__ import annotations
@@ -43,6 +46,7 @@ from mansion.building.load_bearing import (
     retarget_first_round,
 )
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
+from mansion.building.recut import recut_unfit_rooms
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
@@ -439,16 +443,23 @@ def solve_building_floor(
                 layout, graph, fp, rng_seed, attempts, relax = again
                 left_out = [*left_out, *dropped]
                 break
-    merged: list[str] = []
+    mended: list[str] = []
     if repairs:
         # What laying the floor out again could not mend (floors that carry walls, layouts
-        # refused, rooms a floor cannot leave out) is merged into a neighbour, within one
-        # first-round region where walls are carried (mansion.building.merge)
+        # refused, rooms a floor cannot leave out) is mended within one first-round region where
+        # walls are carried
         asked = {i for r in program.requests if r.honoured for i in r.room_ids}
+        # first cut such a room again inside the region it was cut from (nothing of the program
+        # is lost: mansion.building.recut), then merge or drop what that cannot mend
+        layout, mended = recut_unfit_rooms(
+            layout, graph, lambda lay, g: unfit_rooms(lay.rooms, g), program.building_type,
+            min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+        )
         layout, graph, merged = merge_unfit_rooms(
             layout, graph, lambda lay, g: unfit_rooms(lay.rooms, g), program.building_type,
             same_region=program.load_bearing_walls, keep=asked,
         )
+        mended += merged
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
@@ -459,7 +470,7 @@ def solve_building_floor(
     return Floor(
         index=index, graph=graph, footprint=fp, layout=layout,
         room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
-        relaxations=[*floor_program.relaxations, *left_out, *relax, *merged],
+        relaxations=[*floor_program.relaxations, *left_out, *relax, *mended],
         carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
         position_words=words,
     )
