@@ -3,10 +3,10 @@
 
 from __future__ import annotations
 
-from shapely.geometry import Polygon
+from shapely.geometry import Polygon, box
 
 from mansion.building.merge import shape_defects
-from mansion.building.recut import recut_unfit_rooms
+from mansion.building.recut import _passable, recut_narrow_rooms, recut_unfit_rooms
 from test_merge import graph_of, layout_of, unfit
 
 # Half-metre cells, the top line the floor's far side. C corridor (the hub), G a guest room, E its
@@ -106,3 +106,164 @@ def test_generated_floors_cut_rooms_again_before_merging_or_dropping_them() -> N
         room = note.split(" cut again")[0]
         assert room in {n.id for n in f.graph.nodes}
         assert room not in unfit_rooms(f.layout.rooms, f.graph)
+
+
+# A mall's toilet cluster as the layout left it: D the toilet lobby off the concourse A, E and F
+# two WCs, G the accessible toilet 1 m wide (3 m², its minimum 3.3 m², no usable square); B and
+# C shops.
+CLUSTER = """
+BBBBBBBBEEEEFFFCCC
+BBBBBBBBEEEEFFFCCC
+BBBBBBBBEEEEFFFCCC
+BBBBBBBBEEEEFFFCCC
+BBBBBBBBEEEEFFFCCC
+BBBBBBBBEEEEFFFCCC
+BBBBBBBBGGEEFFFCCC
+BBBBBBBBGGDDDDDCCC
+BBBBBBBBGGDDDDDCCC
+BBBBBBBBGGDDDDDCCC
+BBBBBBBBGGDDDDDCCC
+BBBBBBBBGGDDDDDAAA
+AAAAAAAAAAAAAAAAAA
+AAAAAAAAAAAAAAAAAA
+AAAAAAAAAAAAAAAAAA
+AAAAAAAAAAAAAAAAAA
+"""
+CLUSTER_NAMES = {
+    "A": ("concourse", "main", "concourse", 15.0),
+    "B": ("shop_1", "area", "shop", 8.0),
+    "C": ("shop_2", "area", "shop", 8.0),
+    "D": ("toilets", "area", "toilet_lobby", 2.5),
+    "E": ("toilet_1", "area", "toilet", 2.5),
+    "F": ("toilet_2", "area", "toilet", 2.5),
+    "G": ("accessible_toilet", "area", "accessible_toilet", 3.3),
+}
+CLUSTER_EDGES = [
+    ("concourse", "toilets"), ("concourse", "shop_1"), ("concourse", "shop_2"),
+    ("toilets", "toilet_1"), ("toilets", "toilet_2"), ("toilets", "accessible_toilet"),
+]
+
+
+def test_a_toilet_cluster_is_laid_out_again_as_a_lobby_with_its_rooms_along_it() -> None:
+    layout, graph = layout_of(CLUSTER, CLUSTER_NAMES), graph_of(CLUSTER_NAMES, CLUSTER_EDGES)
+    assert set(unfit(layout, graph)) == {"accessible_toilet"}
+    fixed, notes = recut_unfit_rooms(layout, graph, unfit, "shopping_mall")
+    assert [n.split(" (")[0] for n in notes] == ["toilets laid out again with accessible_toilet, toilet_1, toilet_2 along it"]
+    assert unfit(fixed, graph) == {}
+    rooms = {r.id: r for r in fixed.rooms}
+    before = {r.id: r for r in layout.rooms}
+    cluster = ["toilets", "toilet_1", "toilet_2", "accessible_toilet"]
+    # the cluster keeps its cells; every other room is untouched
+    assert sum(rooms[r].area for r in cluster) == sum(before[r].area for r in cluster)
+    assert all(
+        Polygon(rooms[r].polygon).equals(Polygon(before[r].polygon)) for r in ("concourse", "shop_1", "shop_2")
+    )
+    # rectangles: the WCs and the accessible toilet fill their boxes, each opening onto the lobby,
+    # the lobby onto the concourse
+    for rid in cluster[1:]:
+        shape = Polygon(rooms[rid].polygon)
+        assert shape.area == shape.envelope.area
+        assert fixed.adjacency("toilets", rid).longest >= 0.9  # type: ignore[union-attr]
+    assert fixed.adjacency("concourse", "toilets").longest >= 1.0  # type: ignore[union-attr]
+    # fewer defects over the cluster than before
+    def defects(lay: object, rid: str) -> set[str]:
+        r = {x.id: x for x in lay.rooms}[rid]  # type: ignore[attr-defined]
+        return shape_defects(Polygon(r.polygon, r.holes), r.room_type, "shopping_mall")
+    assert sum(len(defects(fixed, r)) for r in cluster) < sum(len(defects(layout, r)) for r in cluster)
+
+
+def test_a_cluster_laid_out_again_keeps_every_door_of_its_rooms() -> None:
+    # the second WC also has a door onto shop 2 (a staff WC; still cut from the lobby, which the
+    # cut rounds reach first): the re-layout keeps that wall
+    edges = [*CLUSTER_EDGES, ("shop_2", "toilet_2")]
+    layout, graph = layout_of(CLUSTER, CLUSTER_NAMES), graph_of(CLUSTER_NAMES, edges)
+    fixed, notes = recut_unfit_rooms(layout, graph, unfit, "shopping_mall")
+    assert len(notes) == 1 and unfit(fixed, graph) == {}
+    assert fixed.adjacency("shop_2", "toilet_2").longest >= 1.0  # type: ignore[union-attr]
+    # the lobby cut from a hub of its own: never laid out again (the WCs are the hub's rooms)
+    names = {**CLUSTER_NAMES, "D": ("toilets", "main", "toilet_lobby", 2.5), "A": ("concourse", "area", "concourse", 15.0)}
+    hub_edges = [("toilets", "concourse"), ("concourse", "shop_1"), ("concourse", "shop_2"), *CLUSTER_EDGES[3:]]
+    graph = graph_of(names, hub_edges)
+    fixed, notes = recut_unfit_rooms(layout_of(CLUSTER, names), graph, unfit, "shopping_mall")
+    assert not any(" laid out again " in n for n in notes)
+
+
+def test_a_room_below_its_width_is_cut_again_as_a_rectangle_with_its_neighbours_floor() -> None:
+    # O, an office with an arm 1 m wide along the top of its neighbour P (a sliver, narrower than
+    # its 2.4 m): cut again as the rectangle of about its size keeping most of its cells, 5.5 m ×
+    # 4 m; P, cut from the same corridor, keeps the rest, 2.5 m × 4 m
+    picture = """
+OOOOOOOOOOOOOOOO
+OOOOOOOOOOOOOOOO
+PPPPPPPPOOOOOOOO
+PPPPPPPPOOOOOOOO
+PPPPPPPPOOOOOOOO
+PPPPPPPPOOOOOOOO
+PPPPPPPPOOOOOOOO
+PPPPPPPPOOOOOOOO
+CCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "O": ("office_1", "area", "office", 8.0),
+        "P": ("office_2", "area", "office", 8.0),
+    }
+    layout = layout_of(picture, names)
+    graph = graph_of(names, [("corridor", "office_1"), ("corridor", "office_2")])
+    before = {r.id: r for r in layout.rooms}
+    assert shape_defects(Polygon(before["office_1"].polygon), "office", "office") == {"narrow", "sliver"}
+    fixed = recut_narrow_rooms(layout, graph, "office")
+    rooms = {r.id: r for r in fixed.rooms}
+    office = Polygon(rooms["office_1"].polygon)
+    assert office.equals(box(2.5, 1.5, 8.0, 5.5))
+    assert not shape_defects(office, "office", "office")
+    assert not shape_defects(Polygon(rooms["office_2"].polygon), "office", "office")
+    assert rooms["office_2"].area == 10.0 and rooms["corridor"].area == before["corridor"].area
+    assert fixed.adjacency("corridor", "office_2").longest >= 1.0  # type: ignore[union-attr]
+    # on a floor that carries walls the two offices are two first-round regions: nothing moves
+    assert recut_narrow_rooms(layout, graph, "office", same_region=True) == layout
+
+
+def test_no_recut_leaves_a_passage_one_cell_wide() -> None:
+    # S, a store of 0.5 m² (its minimum 2 m²) cut from a corridor 2 m wide between two stores D
+    # and E at its ends, the offices A and B beside it at their minimum areas: a store of its
+    # minimum anywhere along the corridor would leave it 0.5 m wide there (which the shape
+    # measures barely see: a few cells of a long corridor), or cut it in two, or take its wall
+    # with D or E; the agent could not pass, so nothing moves
+    picture = """
+AAAAAAAAAAAAAAAAAA
+AAAAAAAAAAAAAAAAAA
+AAAAAAAAAAAAAAAAAA
+AAAAAAAAAAAAAAAAAA
+AAAAAAAAAAAAAAAAAA
+DDDCCCCCCCCCCCCEEE
+DDDCCCCCCCCCCCCEEE
+DDDCCCCCCCCCCCCEEE
+DDDCCCCCCSSCCCCEEE
+BBBBBBBBBBBBBBBBBB
+BBBBBBBBBBBBBBBBBB
+BBBBBBBBBBBBBBBBBB
+BBBBBBBBBBBBBBBBBB
+BBBBBBBBBBBBBBBBBB
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "A": ("office_1", "area", "office", 22.5),
+        "B": ("office_2", "area", "office", 22.5),
+        "D": ("storage_1", "area", "storage", 2.0),
+        "E": ("storage_2", "area", "storage", 2.0),
+        "S": ("storage_3", "area", "storage", 2.0),
+    }
+    edges = [("corridor", r) for r in ("office_1", "office_2", "storage_1", "storage_2", "storage_3")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    assert set(unfit(layout, graph)) == {"storage_3"}
+    fixed, notes = recut_unfit_rooms(layout, graph, unfit, "office")
+    assert notes == [] and fixed == layout
+    # what the rule measures: cells no 1 m square covers, and the pieces the squares cover
+    corridor = layout.grid.array() == layout.grid.ids.index("corridor")
+    assert _passable(corridor) == (0, 1)
+    thin = corridor.copy()
+    thin[5:8, 7:10] = False  # a 1.5 m store at the corridor's bottom edge: 0.5 m left above it
+    assert _passable(thin)[0] > 0

@@ -18,8 +18,30 @@ kept only when
   the room it was cut from stays at its minimum area if it was;
 - the room it was cut from stays in one piece, and every relation of either room in the room graph
   keeps its shared wall: a door's (``min_contact``) where it had one, else what it had;
+- the room it was cut from gains no part that no 1 m square covers (a passage 0.5 m wide the
+  agent cannot take), nor has what such squares cover split into more pieces (:func:`_passable`);
 - the room has no rooms cut from it (their regions would move) and is no core; on a floor whose
   walls carry the floor above both rooms sit in one first-round region, so no carried wall moves.
+
+A room of a cluster that no rectangle mends (an accessible toilet 1 m wide between two WCs and
+their lobby), or a cluster's head itself (a toilet lobby without a usable square), has the whole
+cluster laid out again in the cells it holds: the head (the lobby) a strip along one side, a table
+width deep, the rooms cut from it side by side along the strip, each a run of whole columns with
+its minimum area and a share of the rest by its planned area; every side and every order of the
+rooms is tried. A re-layout is kept only when every room of the cluster is in one piece, at its
+minimum area and with a usable square, no room gains a part one cell wide, every relation keeps
+its wall as above, and the cluster has
+fewer of ``mansion eval realism``'s defects in total than before (a lobby narrower than a mall's
+2.4 m corridors for an accessible toilet that holds its square); of those, the fewest defects, then
+the rooms closest to their planned areas. Only a head that is not the hub, with two to
+:data:`MAX_CLUSTER` rooms none of which has rooms of its own.
+
+A room below its clear width (``mansion eval realism``'s "narrow": an arm 1 m wide along its
+neighbour, a classroom notched by the corridor) is cut again the same way once the floor's unfit
+rooms are mended (:func:`recut_narrow_rooms`): a rectangle of about its own area (its area
+times :data:`NARROW_SPAN`) in the region it shares with the room it was cut from or a sibling,
+keeping as many of its cells as it can, under the same rules; it must come out of the cut no
+longer narrow. Nothing of the program changes, so these recuts are not recorded.
 
 Of the rectangles that pass, the one closest to the room's planned area wins, then the one whose
 remainder is most compact (the most of its box filled), then the region it was cut from over a
@@ -30,24 +52,30 @@ minimum; it was 2.2 m²)").
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable
 
 import numpy as np
-from shapely.geometry import Polygon
+from shapely.geometry import Polygon, box
+
+from mansion import _core
 
 from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, rooms_from_grid, shape_defects
-from mansion.models.graph import RoomGraph
-from mansion.models.layout import FloorLayout
+from mansion.models.graph import RoomGraph, RoomNode
+from mansion.models.layout import FloorLayout, LabelGrid, LayoutRoom
 from mansion.models.room_design import room_design
 from mansion.models.room_shape import EPS
 
-__all__ = ["recut_unfit_rooms"]
+__all__ = ["recut_narrow_rooms", "recut_unfit_rooms"]
 
 #: A rectangle is tried up to this many times its room's planned area (or minimum, the larger).
 MAX_GROWTH = 1.6
-#: Rectangles judged per room at most, closest to its planned area first (each is drawn and its
-#: shared walls measured).
+#: A room below its clear width is cut again at this span of its area (it keeps about its size;
+#: the floor it takes or gives is the neighbour's).
+NARROW_SPAN = (0.9, 1.15)
+#: Rectangles judged per room at most, closest to its planned area first (or, for a room below
+#: its clear width, keeping most of its cells first; each has its shared walls measured).
 MAX_TRIED = 200
 
 
@@ -77,15 +105,19 @@ def recut_unfit_rooms(
         room = min(bad, key=lambda r: (rooms[r].area, r))
         tried.add(room)
         up = parent.get(room)
-        if up is None or room in has_children or nodes[room].is_core:
+        if up is None or nodes[room].is_core:
+            continue
+        if room in has_children:
+            # a cluster's head (a toilet lobby too small or without a square): laid out again
+            # with its rooms
+            found_cluster = _cluster(layout, graph, room, parent, building_type, min_contact)
+            if found_cluster is not None:
+                layout, note = found_cluster
+                notes.append(f"{note} ({room} {bad[room]})")
             continue
         # the region it was cut from first, then a sibling beside it (cut from the same region)
         # that can give floor; never across a carried wall
-        donors = [up] + sorted(
-            other for a in layout.adjacencies if room in (a.a, a.b) and a.longest + EPS >= DOOR_WIDTH
-            for other in [a.b if a.a == room else a.a]
-            if other in nodes and not nodes[other].is_core and parent.get(other) == up
-        )
+        donors = _donors(layout, room, up, parent, nodes)
         best: tuple[tuple[float, float, int], str, FloorLayout] | None = None
         for rank, donor in enumerate(donors):
             if donor not in rooms or (same_region and group.get(donor) != group.get(room)):
@@ -94,12 +126,73 @@ def recut_unfit_rooms(
             if found is not None and (best is None or (found[0], min(rank, 1)) < (best[0][:2], best[0][2])):
                 best = ((*found[0], min(rank, 1)), donor, found[1])
         if best is None:
+            # a room of a cluster (an accessible toilet 1 m wide beside two WCs): the cluster laid
+            # out again, its head a strip with its rooms along it
+            found_cluster = _cluster(layout, graph, up, parent, building_type, min_contact)
+            if found_cluster is not None:
+                layout, note = found_cluster
+                notes.append(f"{note} ({room} {bad[room]})")
             continue
         _, donor, layout = best
         before = rooms[room].area
         after = next(r for r in layout.rooms if r.id == room).area
         where = f"from {donor}" if donor == up else f"with floor from {donor}"
         notes.append(f"{room} cut again {where} at {after:.1f} m² ({room} {bad[room]}; it was {before:.1f} m²)")
+
+
+def recut_narrow_rooms(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    building_type: str | None = None,
+    min_contact: float = 1.0,
+    same_region: bool = False,
+) -> FloorLayout:
+    """``layout`` with each room below its clear width (``mansion eval realism``'s "narrow": an L
+    whose arm is narrower than a ward, a classroom notched by a corridor) cut again as a
+    rectangle of about its area in the region it shares with the room it was cut from or a
+    sibling beside it, under the rules of a recut; rooms with rooms cut from them, circulation
+    and cores are left. The rectangle that keeps most of the room's cells wins. Nothing of the
+    program changes, so nothing is recorded."""
+    parent = cut_parents(graph)
+    group = first_round_groups(graph) if same_region else {}
+    has_children = set(parent.values())
+    nodes = {n.id: n for n in graph.nodes}
+
+    def narrow(rooms: dict[str, LayoutRoom], rid: str) -> bool:
+        r = rooms[rid]
+        return "narrow" in shape_defects(Polygon(r.polygon, r.holes), r.room_type, building_type)
+
+    start = {r.id: r for r in layout.rooms}
+    for room in sorted(start):
+        rooms = {r.id: r for r in layout.rooms}
+        up = parent.get(room)
+        if (
+            up is None or room in has_children or nodes[room].is_core
+            or room_design(rooms[room].room_type).circulation or not narrow(rooms, room)
+        ):
+            continue
+        best: tuple[tuple[float, float], FloorLayout] | None = None
+        for donor in _donors(layout, room, up, parent, nodes):
+            if donor not in rooms or (same_region and group.get(donor) != group.get(room)):
+                continue
+            found = _best_recut(layout, graph, room, donor, building_type, min_contact, narrow=True)
+            if found is not None and (best is None or found[0] < best[0]):
+                best = found
+        if best is not None:
+            layout = best[1]
+    return layout
+
+
+def _donors(
+    layout: FloorLayout, room: str, up: str, parent: dict[str, str], nodes: dict[str, RoomNode]
+) -> list[str]:
+    """The rooms ``room`` may take floor from: the region it was cut from, then each sibling
+    beside it (cut from the same region) sharing a door's width of wall."""
+    return [up] + sorted(
+        other for a in layout.adjacencies if room in (a.a, a.b) and a.longest + EPS >= DOOR_WIDTH
+        for other in [a.b if a.a == room else a.a]
+        if other in nodes and not nodes[other].is_core and parent.get(other) == up
+    )
 
 
 def _best_recut(
@@ -109,9 +202,13 @@ def _best_recut(
     up: str,
     building_type: str | None,
     min_contact: float,
+    narrow: bool = False,
 ) -> tuple[tuple[float, float], FloorLayout] | None:
     """((the miss from the room's planned area, minus the remainder's fill of its box), the
-    layout) of the best rectangle for ``room`` in the region it shares with ``up``, or None."""
+    layout) of the best rectangle for ``room`` in the region it shares with ``up``, or None.
+    ``narrow``: the room is below its clear width, not unfit: a rectangle of about its area
+    (:data:`NARROW_SPAN`), the one keeping most of its cells first (key: (minus the cells kept,
+    the miss from its area))."""
     grid = layout.grid
     labels = grid.array()
     ids = list(grid.ids)
@@ -127,6 +224,10 @@ def _best_recut(
     target = max(rooms[room].target_area, least)
     side = max(3, int(np.ceil(design.min_width / cell - 1e-6)))
     lo, hi = int(np.ceil(least / (cell * cell) - 1e-6)), int(target * MAX_GROWTH / (cell * cell))
+    if narrow:
+        target = max(rooms[room].area, least)
+        lo = max(lo, int(np.ceil(target * NARROW_SPAN[0] / (cell * cell) - 1e-6)))
+        hi = int(target * NARROW_SPAN[1] / (cell * cell))
     # the relations whose shared walls must hold, with what they had
     adj = {frozenset((a.a, a.b)): a for a in layout.adjacencies}
     keep: list[tuple[str, str, float, float]] = []
@@ -141,10 +242,14 @@ def _best_recut(
     up_defects = shape_defects(old_up, rooms[up].room_type, building_type)
     up_node = next(n for n in graph.nodes if n.id == up)
     up_least = up_node.min_area if up_node.min_area is not None else 0.0
+    up_passable = _passable(labels == k_up)
     # prefix sums of the region: a rectangle lies inside it when it holds h * w region cells
     inside = np.zeros((region.shape[0] + 1, region.shape[1] + 1), dtype=np.int64)
     inside[1:, 1:] = np.cumsum(np.cumsum(region, axis=0), axis=1)
-    shapes: list[tuple[float, int, int, int, int]] = []
+    # and of the room's own cells: how many of them a rectangle keeps
+    own = np.zeros_like(inside)
+    own[1:, 1:] = np.cumsum(np.cumsum(labels == k_room, axis=0), axis=1)
+    shapes: list[tuple[float, float, int, int, int, int]] = []
     for h in range(side, r1 - r0 + 1):
         for w in range(side, c1 - c0 + 1):
             if not lo <= h * w <= hi:
@@ -155,66 +260,272 @@ def _best_recut(
                 - inside[r0 + h:r1 + 1, c0:c1 + 1 - w] + inside[r0:r1 + 1 - h, c0:c1 + 1 - w]
             ) == h * w
             miss = abs(h * w * cell * cell - target)
-            shapes += [(miss, int(y) + r0, int(x) + c0, h, w) for y, x in zip(*np.nonzero(full))]
+            for y, x in zip(*np.nonzero(full)):
+                y, x = int(y) + r0, int(x) + c0
+                if narrow:
+                    kept = own[y + h, x + w] - own[y, x + w] - own[y + h, x] + own[y, x]
+                    shapes.append((-float(kept), miss, y, x, h, w))
+                else:
+                    shapes.append((miss, 0.0, y, x, h, w))
     shapes.sort()
-    best: tuple[float, float, int, int, FloorLayout] | None = None
-    for miss, y, x, h, w in shapes[:MAX_TRIED]:
-        if best is not None and miss > best[0] + EPS:
+    (ox, oy) = grid.origin
+    best: tuple[tuple[float, float, int, int], np.ndarray] | None = None
+    for first, miss, y, x, h, w in shapes[:MAX_TRIED]:
+        if best is not None and first > best[0][0] + EPS:
             break
         new = np.where(region, k_up, labels).astype(np.int32)
         new[y:y + h, x:x + w] = k_room
         rest = region.copy()
         rest[y:y + h, x:x + w] = False
-        if not rest.any():
+        if not rest.any() or rest.sum() * cell * cell + EPS < min(up_least, rooms[up].area):
             continue
         # the shared walls first (measured by the core, the cheapest test), then the pieces
-        adjacencies = grid_adjacencies(new, ids, cell)
-        after = {frozenset((a.a, a.b)): a for a in adjacencies}
-        if any(
-            (a := after.get(frozenset((s, t)))) is None
-            or a.longest + EPS < min(longest, max(DOOR_WIDTH, min_contact))
-            or a.contact + EPS < min(contact, min_contact)
-            for s, t, longest, contact in keep
-        ):
+        walls = _walls(new, ids, cell, keep, min_contact)
+        if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
             continue
-        pair = after.get(frozenset((room, up)))
-        if pair is None or pair.longest + EPS < DOOR_WIDTH or not _connected(rest):
+        shape_up = _outline(rest, grid)
+        if shape_up is None:  # the rest in pieces
             continue
-        drawn = {r.id: r for r in rooms_from_grid(new, grid, rooms, {})}
-        shape_room = Polygon(drawn[room].polygon, drawn[room].holes)
-        shape_up = Polygon(drawn[up].polygon, drawn[up].holes)
-        if not shape_defects(shape_room, node.room_type, building_type) <= room_defects - {"unusable"}:
+        # no new part of the rest one cell wide, nor a 1 m passage cut in two
+        if any(a > b for a, b in zip(_passable(rest), up_passable)):
+            continue
+        shape_room = box(ox + x * cell, oy + y * cell, ox + (x + w) * cell, oy + (y + h) * cell)
+        if not shape_defects(shape_room, node.room_type, building_type) <= room_defects - {"unusable", "narrow"}:
             continue
         if not shape_defects(shape_up, rooms[up].room_type, building_type) <= up_defects:
             continue
-        if drawn[up].area + EPS < min(up_least, rooms[up].area):
-            continue
         ry, rx = np.nonzero(rest)
         fill = rest.sum() / ((ry.max() - ry.min() + 1) * (rx.max() - rx.min() + 1))
-        key = (miss, -float(fill), y, x)
-        if best is None or key < best[:4]:
-            relabelled = layout.model_copy(update={
-                "rooms": [drawn.get(r.id, r) for r in layout.rooms],
-                "grid": grid.model_copy(update={"labels": new.tolist()}),
-                "adjacencies": adjacencies,
-            })
-            best = (*key, relabelled)
-    return None if best is None else ((best[0], best[1]), best[4])
+        key = (first, miss, y, x) if narrow else (miss, -float(fill), y, x)
+        if best is None or key < best[0]:
+            best = (key, new)
+    if best is None:
+        return None
+    key, new = best
+    return (key[0], key[1]), _redrawn(layout, new)
+
+
+def _walls(
+    new: np.ndarray, ids: list[str], cell: float, keep: list[tuple[str, str, float, float]], min_contact: float,
+) -> dict[frozenset[str], tuple[float, float]] | None:
+    """The shared walls of label grid ``new`` (pair → (contact, longest), metres, measured by the
+    core), or None when a relation in ``keep`` (its rooms, longest wall and contact before) lost
+    its wall: a door's (``min_contact``) where it had one, else what it had."""
+    walls = {
+        frozenset((ids[a], ids[b])): (total * cell, longest * cell)
+        for a, b, total, longest in _core.adjacencies(new.astype(np.int32))
+    }
+    for s, t, longest, contact in keep:
+        now = walls.get(frozenset((s, t)))
+        if (
+            now is None or now[1] + EPS < min(longest, max(DOOR_WIDTH, min_contact))
+            or now[0] + EPS < min(contact, min_contact)
+        ):
+            return None
+    return walls
+
+
+def _redrawn(layout: FloorLayout, new: np.ndarray) -> FloorLayout:
+    """``layout`` with label grid ``new``: its rooms, outlines and shared walls drawn again."""
+    grid = layout.grid
+    drawn = {r.id: r for r in rooms_from_grid(new, grid, {r.id: r for r in layout.rooms}, {})}
+    return layout.model_copy(update={
+        "rooms": [drawn.get(r.id, r) for r in layout.rooms],
+        "grid": grid.model_copy(update={"labels": new.tolist()}),
+        "adjacencies": grid_adjacencies(new, list(grid.ids), grid.cell_size),
+    })
+
+
+def _outline(mask: np.ndarray, grid: LabelGrid) -> Polygon | None:
+    """The outline of the cells ``mask`` holds, in metres, as the core draws it; None when they
+    are not one 4-connected piece."""
+    rr, cc = np.nonzero(mask)
+    r0, c0 = rr.min(), cc.min()
+    crop = np.where(mask[r0:rr.max() + 1, c0:cc.max() + 1], 0, -1).astype(np.int32)
+    pieces = _core.vectorise(crop)
+    if len(pieces) != 1:
+        return None
+    (ox, oy), s = grid.origin, grid.cell_size
+    _, ring, holes = pieces[0]
+    return Polygon(
+        [(ox + (x + c0) * s, oy + (y + r0) * s) for x, y in ring],
+        [[(ox + (x + c0) * s, oy + (y + r0) * s) for x, y in h] for h in holes],
+    )
+
+
+
+
+def _passable(mask: np.ndarray) -> tuple[int, int]:
+    """(cells no 1 m square inside ``mask`` covers, pieces of what such squares cover): a part one
+    cell (0.5 m) wide is a passage the agent cannot take (``mansion validate``'s navigation)."""
+    window = mask[:-1, :-1] & mask[1:, :-1] & mask[:-1, 1:] & mask[1:, 1:]
+    covered = np.zeros_like(mask)
+    covered[:-1, :-1] |= window
+    covered[1:, :-1] |= window
+    covered[:-1, 1:] |= window
+    covered[1:, 1:] |= window
+    if not covered.any():
+        return int(mask.sum()), 0
+    rr, cc = np.nonzero(covered)
+    crop = np.where(covered[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
+    return int((mask & ~covered).sum()), len(_core.vectorise(crop))
 
 
 def _connected(mask: np.ndarray) -> bool:
-    """Whether the True cells of ``mask`` form one 4-connected piece (grown from one cell, a ring
-    of neighbours at a time)."""
-    reached = np.zeros_like(mask)
-    first = np.argwhere(mask)[0]
-    reached[first[0], first[1]] = True
-    while True:
-        grown = reached.copy()
-        grown[1:] |= reached[:-1]
-        grown[:-1] |= reached[1:]
-        grown[:, 1:] |= reached[:, :-1]
-        grown[:, :-1] |= reached[:, 1:]
-        grown &= mask
-        if (grown == reached).all():
-            return bool((reached == mask).all())
-        reached = grown
+    """Whether the True cells of ``mask`` form one 4-connected piece (as the core draws rooms)."""
+    rr, cc = np.nonzero(mask)
+    crop = np.where(mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
+    return len(_core.vectorise(crop)) == 1
+
+
+#: Rooms a cluster's head serves at most for it to be laid out again (their orders are tried).
+MAX_CLUSTER = 4
+
+
+def _cluster(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    head: str,
+    parent: dict[str, str],
+    building_type: str | None,
+    min_contact: float,
+) -> tuple[FloorLayout, str] | None:
+    """The layout with the cluster of ``head`` laid out again, and its note; None when ``head``
+    is the hub, a core or no cluster's head (its rooms are two to :data:`MAX_CLUSTER`, none of
+    them with rooms of its own), or no re-layout passes."""
+    members = sorted(r for r, up in parent.items() if up == head)
+    nodes = {n.id: n for n in graph.nodes}
+    if (
+        head == graph.hub.id or nodes[head].is_core or not 2 <= len(members) <= MAX_CLUSTER
+        or any(up in members for up in parent.values())
+    ):
+        return None
+    found = _relaid_cluster(layout, graph, head, members, building_type, min_contact)
+    if found is None:
+        return None
+    return found[1], f"{head} laid out again with {', '.join(members)} along it"
+
+
+def _relaid_cluster(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    head: str,
+    members: list[str],
+    building_type: str | None,
+    min_contact: float,
+) -> tuple[float, FloorLayout] | None:
+    """(the rooms' total miss from their planned areas in m², the layout) of the best re-layout
+    of a cluster, or None when none passes: ``head`` (a toilet lobby) as a strip along one side
+    of the cells it and ``members`` (the rooms cut from it) hold, the members side by side along
+    the strip in the rest, each a run of whole columns holding its share of the cells."""
+    grid = layout.grid
+    labels = grid.array()
+    ids = list(grid.ids)
+    cell = grid.cell_size
+    rooms = {r.id: r for r in layout.rooms}
+    nodes = {n.id: n for n in graph.nodes}
+    cluster = [head, *members]
+    keys = {rid: ids.index(rid) for rid in cluster}
+    region = np.isin(labels, list(keys.values()))
+    adj = {frozenset((a.a, a.b)): a for a in layout.adjacencies}
+    keep = [
+        (e.source, e.target, a.longest, a.contact)
+        for e in graph.edges if {e.source, e.target} & set(cluster)
+        for a in [adj.get(frozenset((e.source, e.target)))] if a is not None
+    ]
+    before = {
+        rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
+        for rid in cluster
+    }
+    least = {rid: nodes[rid].min_area or 0.0 for rid in cluster}
+    passable = {rid: _passable(labels == keys[rid]) for rid in cluster}
+    targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in cluster}
+    depth = max(3, int(np.ceil(room_design(rooms[head].room_type).min_width / cell - 1e-6)))
+    best: tuple[float, FloorLayout] | None = None
+    # the strip along each of the four sides: the grid turned so that it lies along the bottom
+    for turn in range(4):
+        view = np.rot90(region, turn)
+        rows = np.nonzero(view.any(axis=1))[0]
+        strip = np.zeros_like(view)
+        strip[rows[0]:rows[0] + depth] = view[rows[0]:rows[0] + depth]
+        band = view & ~strip
+        cols = np.nonzero(band.any(axis=0))[0]
+        if len(cols) < len(members):
+            continue
+        cum = band[:, cols].sum(axis=0).cumsum()
+        # each member its minimum, and what the band holds beyond the minimums in proportion to
+        # what its planned area asks beyond its own
+        room_left = cum[-1] * cell * cell - sum(least[m] for m in members)
+        extra = sum(targets[m] - least[m] for m in members)
+        if room_left < 0:
+            continue
+        want = {m: least[m] + (targets[m] - least[m]) * min(1.0, room_left / extra if extra > 0 else 0.0) for m in members}
+        spare = (room_left - sum(want[m] - least[m] for m in members)) / len(members)
+        for order in itertools.permutations(members):
+            ends, share = [], 0.0
+            for m in order[:-1]:
+                share += want[m] + spare
+                ends.append(int(np.searchsorted(cum, share / (cell * cell) - EPS)))
+            ends.append(len(cols) - 1)
+            turned = np.rot90(labels, turn).copy()
+            turned[strip] = keys[head]
+            start = 0
+            for m, stop in zip(order, ends):
+                if stop < start:
+                    break
+                piece = np.zeros_like(view)
+                piece[:, cols[start:stop + 1]] = True
+                turned[band & piece] = keys[m]
+                start = stop + 1
+            else:
+                new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
+                found = _judged(
+                    layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact,
+                )
+                if found is not None and (best is None or found[0] < best[0] - EPS):
+                    best = found
+    return best
+
+
+def _judged(
+    layout: FloorLayout,
+    new: np.ndarray,
+    cluster: list[str],
+    keep: list[tuple[str, str, float, float]],
+    before: dict[str, set[str]],
+    least: dict[str, float],
+    targets: dict[str, float],
+    passable: dict[str, tuple[int, int]],
+    building_type: str | None,
+    min_contact: float,
+) -> tuple[float, FloorLayout] | None:
+    """(the cluster's total miss, the layout) of a re-laid cluster when it passes the rules: every
+    room in one piece, at its minimum area, with a usable square, no new part one cell wide, and
+    every relation keeping its wall; fewer defects over the cluster."""
+    grid = layout.grid
+    ids = list(grid.ids)
+    layout_types = {r.id: r.room_type for r in layout.rooms}
+    for rid in cluster:
+        mask = new == ids.index(rid)
+        if mask.sum() * grid.cell_size ** 2 + EPS < least[rid] or not _connected(mask):
+            return None
+        if any(a > b for a, b in zip(_passable(mask), passable[rid])):
+            return None
+    if _walls(new, ids, grid.cell_size, keep, min_contact) is None:
+        return None
+    # fewer defects over the cluster than before, none of its rooms unusable (a toilet lobby
+    # narrower than the building's corridors for an accessible toilet that holds its square)
+    defects, miss = 0, 0.0
+    for rid in cluster:
+        mask = new == ids.index(rid)
+        shape = _outline(mask, grid)
+        if shape is None:
+            return None
+        found = shape_defects(shape, layout_types[rid], building_type)
+        if "unusable" in found:
+            return None
+        defects += len(found)
+        miss += abs(mask.sum() * grid.cell_size ** 2 - targets[rid])
+    if defects >= sum(len(d) for d in before.values()):
+        return None
+    return defects * 1e3 + miss, _redrawn(layout, new)

@@ -23,7 +23,9 @@ cannot spare) is first cut again as a rectangle inside the region it was cut fro
 (:mod:`mansion.building.recut`: a 2.2 m² bathroom inside its flat), then merged into a neighbour
 where an architect would, or dropped where the program can do without it
 (:mod:`mansion.building.merge`: a toilet lobby into its corridor, a small ward into the ward
-beside it, a flat's second bedroom into its living room), each recorded.
+beside it, a flat's second bedroom into its living room), each recorded. Last, rooms below their
+clear width are cut again as rectangles where a neighbour can give them floor
+(:func:`mansion.building.recut.recut_narrow_rooms`).
 """
 
 from __future__ import annotations
@@ -46,7 +48,7 @@ from mansion.building.load_bearing import (
     retarget_first_round,
 )
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
-from mansion.building.recut import recut_unfit_rooms
+from mansion.building.recut import recut_narrow_rooms, recut_unfit_rooms
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
@@ -460,6 +462,11 @@ def solve_building_floor(
             same_region=program.load_bearing_walls, keep=asked,
         )
         mended += merged
+        # and rooms below their clear width cut again as rectangles where a neighbour can give
+        layout = recut_narrow_rooms(
+            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+            same_region=program.load_bearing_walls,
+        )
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
