@@ -232,10 +232,10 @@ def _may_drop(
     rooms" (issue 14). Only a room that is neither the hub, a core, circulation nor a room the
     description asked for; a room a home needs (:data:`HOME_KINDS`) only where its region (its
     flat) keeps another of its kind, any other only where the floor keeps another of its type
-    (as :func:`mansion.building.steps.leave_out` asks); and its floor never goes to a core, to circulation (a
-    corridor is planned, not what is left over), to a smaller kind of room (the table's minimum
-    area: a meeting room's floor never makes a phone booth its size) nor across the sanitary line
-    (a dropped bedroom never enlarges a bathroom)."""
+    (as :func:`mansion.building.steps.leave_out` asks); and its floor never goes to a core, to
+    circulation (a corridor is planned, not what is left over), to a smaller kind of room (the
+    table's minimum area: a meeting room's floor never makes a phone booth its size) nor across
+    the sanitary line (a dropped bedroom never enlarges a bathroom)."""
     if gone.id == graph.hub.id or gone.is_core or stays.is_core or gone.id in keep:
         return False
     # a corridor is planned, never what is left over (issue 14)

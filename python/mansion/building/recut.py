@@ -30,11 +30,10 @@ width deep, the rooms cut from it side by side along the strip, each a run of wh
 its minimum area and a share of the rest by its planned area; every side and every order of the
 rooms is tried. A re-layout is kept only when every room of the cluster is in one piece, at its
 minimum area and with a usable square, no room gains a part one cell wide, every relation keeps
-its wall as above, and the cluster has
-fewer of ``mansion eval realism``'s defects in total than before (a lobby narrower than a mall's
-2.4 m corridors for an accessible toilet that holds its square); of those, the fewest defects, then
-the rooms closest to their planned areas. Only a head that is not the hub, with two to
-:data:`MAX_CLUSTER` rooms none of which has rooms of its own.
+its wall as above, and the cluster has fewer of ``mansion eval realism``'s defects in total than
+before (a lobby narrower than a mall's 2.4 m corridors for an accessible toilet that holds its
+square); of those, the fewest defects, then the rooms closest to their planned areas. Only a head
+that is not the hub, with two to :data:`MAX_CLUSTER` rooms none of which has rooms of its own.
 
 A room below its clear width (``mansion eval realism``'s "narrow": an arm 1 m wide along its
 neighbour, a classroom notched by the corridor) is cut again the same way once the floor's unfit
@@ -56,15 +55,14 @@ import itertools
 from collections.abc import Callable
 
 import numpy as np
-from shapely.geometry import Polygon, box
+from shapely.geometry import Polygon
 
 from mansion import _core
-
 from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, rooms_from_grid, shape_defects
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout, LabelGrid, LayoutRoom
-from mansion.models.room_design import room_design
+from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
 from mansion.models.room_shape import EPS
 
 __all__ = ["recut_narrow_rooms", "recut_unfit_rooms"]
@@ -74,9 +72,11 @@ MAX_GROWTH = 1.6
 #: A room below its clear width is cut again at this span of its area (it keeps about its size;
 #: the floor it takes or gives is the neighbour's).
 NARROW_SPAN = (0.9, 1.15)
-#: Rectangles judged per room at most, closest to its planned area first (or, for a room below
-#: its clear width, keeping most of its cells first; each has its shared walls measured).
+#: Rectangles judged per unfit room at most, closest to its planned area first (each has its
+#: shared walls measured).
 MAX_TRIED = 200
+#: Rectangles judged per room below its clear width at most, keeping most of its cells first.
+MAX_NARROW_TRIED = 200
 
 
 def recut_unfit_rooms(
@@ -160,7 +160,12 @@ def recut_narrow_rooms(
 
     def narrow(rooms: dict[str, LayoutRoom], rid: str) -> bool:
         r = rooms[rid]
-        return "narrow" in shape_defects(Polygon(r.polygon, r.holes), r.room_type, building_type)
+        shape = Polygon(r.polygon, r.holes)
+        x0, y0, x1, y1 = shape.bounds
+        # a rectangle at least its width each way is not narrow (most rooms: no opening to draw)
+        if abs(shape.area - (x1 - x0) * (y1 - y0)) < EPS and min(x1 - x0, y1 - y0) + EPS >= room_design(r.room_type).min_width:
+            return False
+        return "narrow" in shape_defects(shape, r.room_type, building_type)
 
     start = {r.id: r for r in layout.rooms}
     for room in sorted(start):
@@ -222,7 +227,9 @@ def _best_recut(
     design = room_design(node.room_type)
     least = node.min_area if node.min_area is not None else design.min_area
     target = max(rooms[room].target_area, least)
-    side = max(3, int(np.ceil(design.min_width / cell - 1e-6)))
+    # at least its clear width each way (circulation: its building's corridors, as realism judges)
+    width = corridor_width(building_type) if design.circulation else design.min_width
+    side = max(3, int(np.ceil(width / cell - 1e-6)))
     lo, hi = int(np.ceil(least / (cell * cell) - 1e-6)), int(target * MAX_GROWTH / (cell * cell))
     if narrow:
         target = max(rooms[room].area, least)
@@ -250,9 +257,12 @@ def _best_recut(
     own = np.zeros_like(inside)
     own[1:, 1:] = np.cumsum(np.cumsum(labels == k_room, axis=0), axis=1)
     shapes: list[tuple[float, float, int, int, int, int]] = []
+    # the room comes out a rectangle at least its width each way, so of the realism defects it
+    # can only be elongated: never where it was not
+    stretch = np.inf if design.circulation or "elongated" in room_defects else ELONGATED_ASPECT
     for h in range(side, r1 - r0 + 1):
         for w in range(side, c1 - c0 + 1):
-            if not lo <= h * w <= hi:
+            if not lo <= h * w <= hi or max(h, w) > stretch * min(h, w):
                 continue
             # the h × w windows of the region's box, by their lower-left cell
             full = (
@@ -268,29 +278,30 @@ def _best_recut(
                 else:
                     shapes.append((miss, 0.0, y, x, h, w))
     shapes.sort()
-    (ox, oy) = grid.origin
+    # each rectangle is judged on the region's box and the cells around it (every wall of the two
+    # rooms lies there): a floor's whole grid is many times larger
+    y0, y1 = max(r0 - 1, 0), min(r1 + 1, labels.shape[0])
+    x0, x1 = max(c0 - 1, 0), min(c1 + 1, labels.shape[1])
+    sub, sub_region = labels[y0:y1, x0:x1], region[y0:y1, x0:x1]
     best: tuple[tuple[float, float, int, int], np.ndarray] | None = None
-    for first, miss, y, x, h, w in shapes[:MAX_TRIED]:
+    for first, miss, y, x, h, w in shapes[:MAX_NARROW_TRIED if narrow else MAX_TRIED]:
         if best is not None and first > best[0][0] + EPS:
             break
-        new = np.where(region, k_up, labels).astype(np.int32)
-        new[y:y + h, x:x + w] = k_room
-        rest = region.copy()
-        rest[y:y + h, x:x + w] = False
+        new = np.where(sub_region, k_up, sub).astype(np.int32)
+        new[y - y0:y - y0 + h, x - x0:x - x0 + w] = k_room
+        rest = sub_region.copy()
+        rest[y - y0:y - y0 + h, x - x0:x - x0 + w] = False
         if not rest.any() or rest.sum() * cell * cell + EPS < min(up_least, rooms[up].area):
             continue
         # the shared walls first (measured by the core, the cheapest test), then the pieces
         walls = _walls(new, ids, cell, keep, min_contact)
         if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
             continue
-        shape_up = _outline(rest, grid)
-        if shape_up is None:  # the rest in pieces
-            continue
         # no new part of the rest one cell wide, nor a 1 m passage cut in two
         if any(a > b for a, b in zip(_passable(rest), up_passable)):
             continue
-        shape_room = box(ox + x * cell, oy + y * cell, ox + (x + w) * cell, oy + (y + h) * cell)
-        if not shape_defects(shape_room, node.room_type, building_type) <= room_defects - {"unusable", "narrow"}:
+        shape_up = _outline(rest, grid, (y0, x0))
+        if shape_up is None:  # the rest in pieces
             continue
         if not shape_defects(shape_up, rooms[up].room_type, building_type) <= up_defects:
             continue
@@ -302,7 +313,9 @@ def _best_recut(
     if best is None:
         return None
     key, new = best
-    return (key[0], key[1]), _redrawn(layout, new)
+    whole = labels.astype(np.int32)
+    whole[y0:y1, x0:x1] = new
+    return (key[0], key[1]), _redrawn(layout, whole)
 
 
 def _walls(
@@ -336,12 +349,12 @@ def _redrawn(layout: FloorLayout, new: np.ndarray) -> FloorLayout:
     })
 
 
-def _outline(mask: np.ndarray, grid: LabelGrid) -> Polygon | None:
-    """The outline of the cells ``mask`` holds, in metres, as the core draws it; None when they
-    are not one 4-connected piece."""
+def _outline(mask: np.ndarray, grid: LabelGrid, at: tuple[int, int] = (0, 0)) -> Polygon | None:
+    """The outline of the cells ``mask`` holds (a piece of the grid from row and column ``at``),
+    in metres, as the core draws it; None when they are not one 4-connected piece."""
     rr, cc = np.nonzero(mask)
-    r0, c0 = rr.min(), cc.min()
-    crop = np.where(mask[r0:rr.max() + 1, c0:cc.max() + 1], 0, -1).astype(np.int32)
+    crop = np.where(mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
+    r0, c0 = rr.min() + at[0], cc.min() + at[1]
     pieces = _core.vectorise(crop)
     if len(pieces) != 1:
         return None
@@ -351,8 +364,6 @@ def _outline(mask: np.ndarray, grid: LabelGrid) -> Polygon | None:
         [(ox + (x + c0) * s, oy + (y + r0) * s) for x, y in ring],
         [[(ox + (x + c0) * s, oy + (y + r0) * s) for x, y in h] for h in holes],
     )
-
-
 
 
 def _passable(mask: np.ndarray) -> tuple[int, int]:
@@ -459,7 +470,8 @@ def _relaid_cluster(
         extra = sum(targets[m] - least[m] for m in members)
         if room_left < 0:
             continue
-        want = {m: least[m] + (targets[m] - least[m]) * min(1.0, room_left / extra if extra > 0 else 0.0) for m in members}
+        scale = min(1.0, room_left / extra) if extra > 0 else 0.0
+        want = {m: least[m] + (targets[m] - least[m]) * scale for m in members}
         spare = (room_left - sum(want[m] - least[m] for m in members)) / len(members)
         for order in itertools.permutations(members):
             ends, share = [], 0.0
