@@ -1,5 +1,5 @@
-"""Rooms the layout left unfit are cut again inside the region they were cut from
-(mansion.building.recut)."""
+"""Rooms the layout left unfit or below their clear width are cut again as rectangles inside the
+region they were cut from, and toilet clusters laid out again (mansion.building.recut)."""
 
 from __future__ import annotations
 
