@@ -94,7 +94,7 @@ def recut_unfit_rooms(
     notes: list[str] = []
     tried: set[str] = set()
     parent = cut_parents(graph)
-    group = first_round_groups(graph) if same_region else {}
+    group = first_round_groups(graph) if same_region else None
     has_children = set(parent.values())
     nodes = {n.id: n for n in graph.nodes}
     while True:
@@ -107,33 +107,20 @@ def recut_unfit_rooms(
         up = parent.get(room)
         if up is None or nodes[room].is_core:
             continue
-        if room in has_children:
-            # a cluster's head (a toilet lobby too small or without a square): laid out again
-            # with its rooms
-            found_cluster = _cluster(layout, graph, room, parent, building_type, min_contact)
-            if found_cluster is not None:
-                layout, note = found_cluster
-                notes.append(f"{note} ({room} {bad[room]})")
-            continue
-        # the region it was cut from first, then a sibling beside it (cut from the same region)
-        # that can give floor; never across a carried wall
-        donors = _donors(layout, room, up, parent, nodes)
-        best: tuple[tuple[float, float, int], str, FloorLayout] | None = None
-        for rank, donor in enumerate(donors):
-            if donor not in rooms or (same_region and group.get(donor) != group.get(room)):
-                continue
-            found = _best_recut(layout, graph, room, donor, building_type, min_contact)
-            if found is not None and (best is None or (found[0], min(rank, 1)) < (best[0][:2], best[0][2])):
-                best = ((*found[0], min(rank, 1)), donor, found[1])
+        best = None if room in has_children else _best_over_donors(
+            layout, graph, room, up, parent, nodes, group, building_type, min_contact,
+        )
         if best is None:
-            # a room of a cluster (an accessible toilet 1 m wide beside two WCs): the cluster laid
-            # out again, its head a strip with its rooms along it
-            found_cluster = _cluster(layout, graph, up, parent, building_type, min_contact)
+            # the cluster laid out again, its head a strip with its rooms along it: the room's own
+            # (a toilet lobby too small or without a square), or the one it is part of when no
+            # rectangle mends it (an accessible toilet 1 m wide beside two WCs)
+            head = room if room in has_children else up
+            found_cluster = _cluster(layout, graph, head, parent, building_type, min_contact)
             if found_cluster is not None:
                 layout, note = found_cluster
                 notes.append(f"{note} ({room} {bad[room]})")
             continue
-        _, donor, layout = best
+        donor, layout = best
         before = rooms[room].area
         after = next(r for r in layout.rooms if r.id == room).area
         where = f"from {donor}" if donor == up else f"with floor from {donor}"
@@ -154,7 +141,7 @@ def recut_narrow_rooms(
     and cores are left. The rectangle that keeps most of the room's cells wins. Nothing of the
     program changes, so nothing is recorded."""
     parent = cut_parents(graph)
-    group = first_round_groups(graph) if same_region else {}
+    group = first_round_groups(graph) if same_region else None
     has_children = set(parent.values())
     nodes = {n.id: n for n in graph.nodes}
 
@@ -176,16 +163,49 @@ def recut_narrow_rooms(
             or room_design(rooms[room].room_type).circulation or not narrow(rooms, room)
         ):
             continue
-        best: tuple[tuple[float, float], FloorLayout] | None = None
-        for donor in _donors(layout, room, up, parent, nodes):
-            if donor not in rooms or (same_region and group.get(donor) != group.get(room)):
-                continue
-            found = _best_recut(layout, graph, room, donor, building_type, min_contact, narrow=True)
-            if found is not None and (best is None or found[0] < best[0]):
-                best = found
+        best = _best_over_donors(
+            layout, graph, room, up, parent, nodes, group, building_type, min_contact, narrow=True,
+        )
         if best is not None:
             layout = best[1]
     return layout
+
+
+def _best_over_donors(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    room: str,
+    up: str,
+    parent: dict[str, str],
+    nodes: dict[str, RoomNode],
+    group: dict[str, str] | None,
+    building_type: str | None,
+    min_contact: float,
+    narrow: bool = False,
+) -> tuple[str, FloorLayout] | None:
+    """(the room that gives, the layout) of the best recut of ``room`` over :func:`_donors`, the
+    region it was cut from winning ties (then the siblings in order); ``group``: each room's
+    first-round region where floors carry walls (no floor crosses between two), else None."""
+    rooms = {r.id for r in layout.rooms}
+    best: tuple[tuple[float, float], str, FloorLayout] | None = None
+    for donor in _donors(layout, room, up, parent, nodes):
+        if donor not in rooms or (group is not None and group.get(donor) != group.get(room)):
+            continue
+        found = _best_recut(layout, graph, room, donor, building_type, min_contact, narrow=narrow)
+        if found is not None and (best is None or found[0] < best[0]):
+            best = (found[0], donor, found[1])
+    return None if best is None else (best[1], best[2])
+
+
+def _kept_walls(layout: FloorLayout, graph: RoomGraph, among: set[str]) -> list[tuple[str, str, float, float]]:
+    """The relations of the room graph touching a room of ``among`` that have a wall in
+    ``layout``: (its rooms, the longest wall, the contact), which :func:`_walls` holds them to."""
+    adj = {frozenset((a.a, a.b)): a for a in layout.adjacencies}
+    return [
+        (e.source, e.target, a.longest, a.contact)
+        for e in graph.edges if {e.source, e.target} & among
+        for a in [adj.get(frozenset((e.source, e.target)))] if a is not None
+    ]
 
 
 def _donors(
@@ -236,13 +256,7 @@ def _best_recut(
         lo = max(lo, int(np.ceil(target * NARROW_SPAN[0] / (cell * cell) - 1e-6)))
         hi = int(target * NARROW_SPAN[1] / (cell * cell))
     # the relations whose shared walls must hold, with what they had
-    adj = {frozenset((a.a, a.b)): a for a in layout.adjacencies}
-    keep: list[tuple[str, str, float, float]] = []
-    for e in graph.edges:
-        if room in (e.source, e.target) or up in (e.source, e.target):
-            a = adj.get(frozenset((e.source, e.target)))
-            if a is not None:
-                keep.append((e.source, e.target, a.longest, a.contact))
+    keep = _kept_walls(layout, graph, {room, up})
     old_room = Polygon(rooms[room].polygon, rooms[room].holes)
     old_up = Polygon(rooms[up].polygon, rooms[up].holes)
     room_defects = shape_defects(old_room, node.room_type, building_type)
@@ -438,12 +452,7 @@ def _relaid_cluster(
     cluster = [head, *members]
     keys = {rid: ids.index(rid) for rid in cluster}
     region = np.isin(labels, list(keys.values()))
-    adj = {frozenset((a.a, a.b)): a for a in layout.adjacencies}
-    keep = [
-        (e.source, e.target, a.longest, a.contact)
-        for e in graph.edges if {e.source, e.target} & set(cluster)
-        for a in [adj.get(frozenset((e.source, e.target)))] if a is not None
-    ]
+    keep = _kept_walls(layout, graph, set(cluster))
     before = {
         rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
         for rid in cluster

@@ -451,14 +451,18 @@ def solve_building_floor(
         # refused, rooms a floor cannot leave out) is mended within one first-round region where
         # walls are carried
         asked = {i for r in program.requests if r.honoured for i in r.room_ids}
+
+        def unfit_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
+            return unfit_rooms(lay.rooms, g)
+
         # first cut such a room again inside the region it was cut from (nothing of the program
         # is lost: mansion.building.recut), then merge or drop what that cannot mend
         layout, mended = recut_unfit_rooms(
-            layout, graph, lambda lay, g: unfit_rooms(lay.rooms, g), program.building_type,
+            layout, graph, unfit_of, program.building_type,
             min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
         )
         layout, graph, merged = merge_unfit_rooms(
-            layout, graph, lambda lay, g: unfit_rooms(lay.rooms, g), program.building_type,
+            layout, graph, unfit_of, program.building_type,
             same_region=program.load_bearing_walls, keep=asked,
         )
         mended += merged
