@@ -35,7 +35,7 @@
 //! of the solver grid, so the result is deterministic.
 
 use crate::grid::{Grid, Label, Walls, EMPTY, OUTSIDE};
-use crate::topology::square_coverage;
+use crate::topology::{coverage_of_sides, square_coverage, square_sides};
 
 /// What a room must reach, per label (index = label).
 pub struct Minimums<'a> {
@@ -410,7 +410,7 @@ fn try_shed(
         if giver
             .kept
             .iter()
-            .any(|&(a, b)| longest_contact(grid, a, b, giver.both) < min.contact)
+            .any(|&(a, b)| !has_contact(grid, a, b, giver.both, min.contact))
         {
             return None;
         }
@@ -507,7 +507,7 @@ fn push(
             .kept
             .iter()
             .chain(&behind.kept)
-            .any(|&(a, b)| longest_contact(grid, a, b, all) < min.contact)
+            .any(|&(a, b)| !has_contact(grid, a, b, all, min.contact))
         {
             return None;
         }
@@ -556,7 +556,7 @@ impl Donor {
             .copied()
             .filter(|&(a, b)| a == r || b == r || a == d || b == d)
             .chain([(r, OUTSIDE), (d, OUTSIDE)])
-            .filter(|&(a, b)| longest_contact(grid, a, b, both) >= min.contact)
+            .filter(|&(a, b)| has_contact(grid, a, b, both, min.contact))
             .collect();
         let whole = blocks_connected(grid, d, before.bbox);
         Some(Donor {
@@ -612,7 +612,7 @@ fn try_move(
                 || donor
                     .kept
                     .iter()
-                    .any(|&(a, b)| longest_contact(grid, a, b, donor.both) < min.contact)
+                    .any(|&(a, b)| !has_contact(grid, a, b, donor.both, min.contact))
             {
                 return None;
             }
@@ -661,13 +661,16 @@ fn measure(grid: &Grid, l: Label, within: Option<BBox>, min: &Minimums) -> Optio
     let (short_side, long_side) = (bw.min(bh), bw.max(bh));
     // how far the room's own clear width falls short of the rule, along its length: widening
     // lowers it, lengthening a room that is still too narrow does not
-    let thin = if clear > 1 && uncovered(grid, bbox, l, clear) > tolerated {
+    // the square sides are worked out once and each width's count kept: a room is judged at
+    // its clear width (several times while halving), its rule and the usable square
+    let mut squares = Squares::new(grid, bbox, l);
+    let thin = if clear > 1 && squares.uncovered(clear) > tolerated {
         // the widest square side below the rule that still covers all but the tenth (the share
         // it leaves uncovered grows with the side, so halving finds it)
         let (mut lo, mut hi) = (0, clear);
         while hi - lo > 1 {
             let mid = (lo + hi) / 2;
-            if uncovered(grid, bbox, l, mid) <= tolerated {
+            if squares.uncovered(mid) <= tolerated {
                 lo = mid;
             } else {
                 hi = mid;
@@ -676,17 +679,17 @@ fn measure(grid: &Grid, l: Label, within: Option<BBox>, min: &Minimums) -> Optio
         // the widths it lacks below the rule along its length, plus the cells the rule's
         // squares leave uncovered beyond the tenth: widening one stretch of a room counts
         let own = lo;
-        (clear - own - 1) * long_side + uncovered(grid, bbox, l, clear) - tolerated
+        (clear - own - 1) * long_side + squares.uncovered(clear) - tolerated
     } else {
         0
     };
     let rule = min.rule.get(li).copied().unwrap_or(0);
     let ruled = if rule > 1 {
-        uncovered(grid, bbox, l, rule)
+        squares.uncovered(rule)
     } else {
         0
     };
-    let usable = uncovered(grid, bbox, l, USABLE);
+    let usable = squares.uncovered(USABLE);
     let aspect = min.aspect.get(li).copied().unwrap_or(0.0);
     let long = if aspect > 0.0 && long_side as f64 > aspect * short_side as f64 {
         ((long_side as f64 - aspect * short_side as f64).ceil() as usize) * short_side
@@ -710,17 +713,41 @@ fn measure(grid: &Grid, l: Label, within: Option<BBox>, min: &Minimums) -> Optio
     })
 }
 
-/// Cells of room `l` (inside `bbox`) that no `width × width` square of the room covers.
-fn uncovered(grid: &Grid, bbox: BBox, l: Label, width: usize) -> usize {
-    let (x0, y0, x1, y1) = bbox;
-    let bw = x1 - x0 + 1;
-    let cover = square_coverage(grid, bbox, l, width);
-    (y0..=y1)
-        .flat_map(|y| (x0..=x1).map(move |x| (x, y)))
-        .filter(|&(x, y)| {
-            grid.cells[y * grid.w + x] == l && cover[(y - y0) * (bw + 1) + x - x0] <= 0
-        })
-        .count()
+/// Room `l`'s squares inside its bounding box, for counting the cells no square of a width
+/// covers at several widths: the squares' sides are worked out once ([`square_sides`]).
+struct Squares {
+    sides: Vec<u16>,
+    bw: usize,
+    bh: usize,
+    /// (width, uncovered cells) already counted
+    counted: Vec<(usize, usize)>,
+}
+
+impl Squares {
+    fn new(grid: &Grid, bbox: BBox, l: Label) -> Self {
+        let (x0, y0, x1, y1) = bbox;
+        Squares {
+            sides: square_sides(grid, bbox, l),
+            bw: x1 - x0 + 1,
+            bh: y1 - y0 + 1,
+            counted: Vec::new(),
+        }
+    }
+
+    /// The cells of the room that no `width × width` square of it covers.
+    fn uncovered(&mut self, width: usize) -> usize {
+        if let Some(&(_, n)) = self.counted.iter().find(|&&(w, _)| w == width) {
+            return n;
+        }
+        let (bw, bh) = (self.bw, self.bh);
+        let cover = coverage_of_sides(&self.sides, bw, bh, width);
+        let n = (0..bh)
+            .flat_map(|y| (0..bw).map(move |x| (x, y)))
+            .filter(|&(x, y)| self.sides[y * bw + x] > 0 && cover[y * (bw + 1) + x] <= 0)
+            .count();
+        self.counted.push((width, n));
+        n
+    }
 }
 
 /// The cells (grid indices) of room `l` inside `bbox` that no `width × width` square of the room
@@ -818,9 +845,15 @@ fn connected(grid: &Grid, l: Label, bbox: BBox) -> bool {
     reached == total
 }
 
-/// Longest straight run of cell edges between rooms `a` and `b` (`b` may be [`OUTSIDE`]) among
-/// the edges of the cells in `bbox` (which must hold every cell of `a` or of `b`).
-fn longest_contact(grid: &Grid, a: Label, b: Label, bbox: BBox) -> u32 {
+/// Whether rooms `a` and `b` (`b` may be [`OUTSIDE`]) share a straight run of at least `need`
+/// cell edges among the edges of the cells in `bbox` (which must hold every cell of `a` or of
+/// `b`). The repair asks this of every relation a move must keep, for every move it tries, so
+/// the scan stops at the first run long enough and reads the grid row by row (the runs along a
+/// column are kept per column instead of walking down it).
+fn has_contact(grid: &Grid, a: Label, b: Label, bbox: BBox, need: u32) -> bool {
+    if need == 0 {
+        return true;
+    }
     let w = grid.w;
     let (x0, y0, x1, y1) = (
         bbox.0.saturating_sub(1),
@@ -829,32 +862,37 @@ fn longest_contact(grid: &Grid, a: Label, b: Label, bbox: BBox) -> u32 {
         (bbox.3 + 1).min(grid.h - 1),
     );
     let pair = |p: Label, q: Label| (p == a && q == b) || (p == b && q == a);
-    let mut best = 0u32;
     // edges between rows y and y + 1, runs along x
     for y in y0..y1 {
+        let (row, up) = (&grid.cells[y * w..], &grid.cells[(y + 1) * w..]);
         let mut run = 0u32;
         for x in x0..=x1 {
-            if pair(grid.cells[y * w + x], grid.cells[(y + 1) * w + x]) {
+            if pair(row[x], up[x]) {
                 run += 1;
-                best = best.max(run);
+                if run >= need {
+                    return true;
+                }
             } else {
                 run = 0;
             }
         }
     }
-    // edges between columns x and x + 1, runs along y
-    for x in x0..x1 {
-        let mut run = 0u32;
-        for y in y0..=y1 {
-            if pair(grid.cells[y * w + x], grid.cells[y * w + x + 1]) {
-                run += 1;
-                best = best.max(run);
+    // edges between columns x and x + 1, runs along y: one run per column, row by row
+    let mut runs = vec![0u32; x1 - x0];
+    for y in y0..=y1 {
+        let row = &grid.cells[y * w..];
+        for (i, x) in (x0..x1).enumerate() {
+            if pair(row[x], row[x + 1]) {
+                runs[i] += 1;
+                if runs[i] >= need {
+                    return true;
+                }
             } else {
-                run = 0;
+                runs[i] = 0;
             }
         }
     }
-    best
+    false
 }
 
 #[cfg(test)]

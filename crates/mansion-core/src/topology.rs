@@ -284,29 +284,47 @@ pub fn square_coverage(
     width: usize,
 ) -> Vec<i32> {
     let (x0, y0, x1, y1) = bbox;
+    let sides = square_sides(grid, bbox, label);
+    coverage_of_sides(&sides, x1 - x0 + 1, y1 - y0 + 1, width)
+}
+
+/// The side of the largest `label` square ending (bottom-right) at each cell of `bbox`, row by
+/// row (0 off the label): the dynamic programme behind [`square_coverage`], which a caller
+/// judging one room at several widths runs once.
+pub fn square_sides(grid: &Grid, bbox: (usize, usize, usize, usize), label: Label) -> Vec<u16> {
+    let (x0, y0, x1, y1) = bbox;
     let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
     let mut sq = vec![0u16; bw * bh];
-    let mut diff = vec![0i32; (bw + 1) * (bh + 1)];
     for y in 0..bh {
         for x in 0..bw {
             if grid.cells[(y + y0) * grid.w + x + x0] != label {
                 continue;
             }
-            let v = if x == 0 || y == 0 {
+            sq[y * bw + x] = if x == 0 || y == 0 {
                 1
             } else {
                 1 + sq[y * bw + x - 1]
                     .min(sq[(y - 1) * bw + x])
                     .min(sq[(y - 1) * bw + x - 1])
             };
-            sq[y * bw + x] = v;
-            if v as usize >= width {
-                let (ax, ay) = (x + 1 - width, y + 1 - width);
-                diff[ay * (bw + 1) + ax] += 1;
-                diff[ay * (bw + 1) + x + 1] -= 1;
-                diff[(y + 1) * (bw + 1) + ax] -= 1;
-                diff[(y + 1) * (bw + 1) + x + 1] += 1;
+        }
+    }
+    sq
+}
+
+/// [`square_coverage`] from the square sides of a `bw × bh` box ([`square_sides`]).
+pub fn coverage_of_sides(sides: &[u16], bw: usize, bh: usize, width: usize) -> Vec<i32> {
+    let mut diff = vec![0i32; (bw + 1) * (bh + 1)];
+    for y in 0..bh {
+        for x in 0..bw {
+            if (sides[y * bw + x] as usize) < width.max(1) {
+                continue;
             }
+            let (ax, ay) = (x + 1 - width, y + 1 - width);
+            diff[ay * (bw + 1) + ax] += 1;
+            diff[ay * (bw + 1) + x + 1] -= 1;
+            diff[(y + 1) * (bw + 1) + ax] -= 1;
+            diff[(y + 1) * (bw + 1) + x + 1] += 1;
         }
     }
     for y in 0..=bh {
