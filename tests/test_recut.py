@@ -267,3 +267,76 @@ BBBBBBBBBBBBBBBBBB
     thin = corridor.copy()
     thin[5:8, 7:10] = False  # a 1.5 m store at the corridor's bottom edge: 0.5 m left above it
     assert _passable(thin)[0] > 0
+
+
+def test_a_ward_below_its_width_beside_its_ensuite_is_cut_again_with_it_as_a_suite() -> None:
+    # W, a ward 3.5 m wide whose top is an arm 1.5 m wide beside its ensuite E (a fifth of the
+    # ward narrower than its 3.2 m); V, the ward beside it, holds the column above W's body. The
+    # suite is cut again as the 3.5 m × 7 m rectangle keeping all its cells (V gives the column):
+    # the ensuite a rectangle of its size (3.75 m²) in the far corner, the ward the rest, its body
+    # 3.5 m wide onto the corridor and a niche 1 m wide beside the ensuite (a tenth of it at most)
+    picture = """
+EEEWWWVVVVVVVVVV
+EEEWWWVVVVVVVVVV
+EEEWWWVVVVVVVVVV
+EEEWWWVVVVVVVVVV
+EEEWWWVVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+WWWWWWWVVVVVVVVV
+CCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "W": ("ward_1", "area", "ward", 14.5),
+        "E": ("ward_1_ensuite", "area", "ensuite", 3.0),
+        "V": ("ward_2", "area", "ward", 14.5),
+    }
+    edges = [("corridor", "ward_1"), ("corridor", "ward_2"), ("ward_1", "ward_1_ensuite")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    before = {r.id: r for r in layout.rooms}
+    assert "narrow" in shape_defects(Polygon(before["ward_1"].polygon), "ward", "hospital")
+    fixed = recut_narrow_rooms(layout, graph, "hospital")
+    rooms = {r.id: r for r in fixed.rooms}
+    ward = Polygon(rooms["ward_1"].polygon, rooms["ward_1"].holes)
+    ensuite = Polygon(rooms["ward_1_ensuite"].polygon)
+    assert ward.equals(box(0.0, 1.5, 3.5, 7.0).union(box(2.5, 7.0, 3.5, 8.5)))
+    assert ensuite.equals(box(0.0, 7.0, 2.5, 8.5))
+    for shape, kind in ((ward, "ward"), (ensuite, "ensuite")):
+        assert not shape_defects(shape, kind, "hospital")
+    assert not shape_defects(Polygon(rooms["ward_2"].polygon, rooms["ward_2"].holes), "ward", "hospital")
+    # nothing of the floor is lost, and every door keeps its wall
+    assert sum(r.area for r in fixed.rooms) == sum(r.area for r in layout.rooms)
+    assert rooms["corridor"].area == before["corridor"].area
+    assert fixed.adjacency("corridor", "ward_1").longest >= 1.0  # type: ignore[union-attr]
+    assert fixed.adjacency("ward_1", "ward_1_ensuite").longest >= 0.9  # type: ignore[union-attr]
+    assert fixed.adjacency("corridor", "ward_2").longest >= 1.0  # type: ignore[union-attr]
+    # on a floor that carries walls the two wards are two first-round regions: nothing moves
+    assert recut_narrow_rooms(layout, graph, "hospital", same_region=True) == layout
+
+
+def test_the_grid_count_of_an_l_agrees_with_the_realism_measures() -> None:
+    # every h × w rectangle (up to 5 m, w ≥ h) less an eh × ew corner, as cells of 0.5 m, for a ward's
+    # 3.2 m (a square of 7 cells) and a flat's 3.0 m (6 cells): _l_defects (the suite recut's
+    # quick test) gives exactly what shape_defects finds on the outline
+    from mansion.building.recut import _l_defects
+
+    for room_type, width in (("ward", 3.2), ("unit_living", 3.0)):
+        for h in range(3, 11):
+            for w in range(h, 11):  # the measures do not change when the picture is turned
+                for eh in range(1, h + 1):
+                    for ew in range(1, w + 1):
+                        if eh == h and ew == w:
+                            continue
+                        shape = box(0, 0, w * 0.5, h * 0.5).difference(box(0, 0, ew * 0.5, eh * 0.5))
+                        assert _l_defects(h, w, eh, ew, width, 0.5) == shape_defects(shape, room_type, None), (
+                            room_type, h, w, eh, ew,
+                        )

@@ -59,11 +59,13 @@ from shapely.geometry import Polygon
 
 from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
-from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, rooms_from_grid, shape_defects
+from mansion.building.merge import (
+    DOOR_WIDTH, USABLE_SIDE, grid_adjacencies, mask_defects, rooms_from_grid, shape_defects,
+)
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout, LabelGrid, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
-from mansion.models.room_shape import EPS
+from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
 __all__ = ["recut_narrow_rooms", "recut_unfit_rooms"]
 
@@ -77,6 +79,13 @@ NARROW_SPAN = (0.9, 1.15)
 MAX_TRIED = 200
 #: Rectangles judged per room below its clear width at most, keeping most of its cells first.
 MAX_NARROW_TRIED = 200
+#: Rectangles judged per suite (a room below its clear width and the one room cut from it: a ward
+#: and its ensuite) at most, keeping most of the suite's cells first; and places of the room cut
+#: from it judged in full per rectangle (its corners and sizes, closest to its cells first).
+MAX_SUITE_TRIED = 60
+MAX_INNER_TRIED = 4
+#: The room cut from a suite's room is drawn up to this many times its area (or its minimum).
+INNER_GROWTH = 1.5
 
 
 def recut_unfit_rooms(
@@ -154,17 +163,27 @@ def recut_narrow_rooms(
             return False
         return "narrow" in shape_defects(shape, r.room_type, building_type)
 
+    children: dict[str, list[str]] = {}
+    for child, head in sorted(parent.items()):
+        children.setdefault(head, []).append(child)
     start = {r.id: r for r in layout.rooms}
     for room in sorted(start):
         rooms = {r.id: r for r in layout.rooms}
         up = parent.get(room)
         if (
-            up is None or room in has_children or nodes[room].is_core
+            up is None or nodes[room].is_core
             or room_design(rooms[room].room_type).circulation or not narrow(rooms, room)
         ):
             continue
+        own = children.get(room, [])
+        if own and (
+            len(own) > 1 or own[0] in has_children or own[0] not in rooms or nodes[own[0]].is_core
+            or room_design(rooms[own[0]].room_type).circulation
+        ):
+            continue  # a room with several rooms cut from it (a flat's living bay) keeps its shape
         best = _best_over_donors(
             layout, graph, room, up, parent, nodes, group, building_type, min_contact, narrow=True,
+            inner=own[0] if own else None,
         )
         if best is not None:
             layout = best[1]
@@ -182,16 +201,21 @@ def _best_over_donors(
     building_type: str | None,
     min_contact: float,
     narrow: bool = False,
+    inner: str | None = None,
 ) -> tuple[str, FloorLayout] | None:
     """(the room that gives, the layout) of the best recut of ``room`` over :func:`_donors`, the
     region it was cut from winning ties (then the siblings in order); ``group``: each room's
-    first-round region where floors carry walls (no floor crosses between two), else None."""
+    first-round region where floors carry walls (no floor crosses between two), else None.
+    ``inner``: the one room cut from ``room``, recut with it as a suite (:func:`_best_suite`)."""
     rooms = {r.id for r in layout.rooms}
     best: tuple[tuple[float, float], str, FloorLayout] | None = None
     for donor in _donors(layout, room, up, parent, nodes):
         if donor not in rooms or (group is not None and group.get(donor) != group.get(room)):
             continue
-        found = _best_recut(layout, graph, room, donor, building_type, min_contact, narrow=narrow)
+        found = (
+            _best_recut(layout, graph, room, donor, building_type, min_contact, narrow=narrow)
+            if inner is None else _best_suite(layout, graph, room, inner, donor, building_type, min_contact)
+        )
         if found is not None and (best is None or found[0] < best[0]):
             best = (found[0], donor, found[1])
     return None if best is None else (best[1], best[2])
@@ -264,33 +288,13 @@ def _best_recut(
     up_node = next(n for n in graph.nodes if n.id == up)
     up_least = up_node.min_area if up_node.min_area is not None else 0.0
     up_passable = _passable(labels == k_up)
-    # prefix sums of the region: a rectangle lies inside it when it holds h * w region cells
-    inside = np.zeros((region.shape[0] + 1, region.shape[1] + 1), dtype=np.int64)
-    inside[1:, 1:] = np.cumsum(np.cumsum(region, axis=0), axis=1)
-    # and of the room's own cells: how many of them a rectangle keeps
-    own = np.zeros_like(inside)
-    own[1:, 1:] = np.cumsum(np.cumsum(labels == k_room, axis=0), axis=1)
-    shapes: list[tuple[float, float, int, int, int, int]] = []
     # the room comes out a rectangle at least its width each way, so of the realism defects it
     # can only be elongated: never where it was not
     stretch = np.inf if design.circulation or "elongated" in room_defects else ELONGATED_ASPECT
-    for h in range(side, r1 - r0 + 1):
-        for w in range(side, c1 - c0 + 1):
-            if not lo <= h * w <= hi or max(h, w) > stretch * min(h, w):
-                continue
-            # the h × w windows of the region's box, by their lower-left cell
-            full = (
-                inside[r0 + h:r1 + 1, c0 + w:c1 + 1] - inside[r0:r1 + 1 - h, c0 + w:c1 + 1]
-                - inside[r0 + h:r1 + 1, c0:c1 + 1 - w] + inside[r0:r1 + 1 - h, c0:c1 + 1 - w]
-            ) == h * w
-            miss = abs(h * w * cell * cell - target)
-            for y, x in zip(*np.nonzero(full)):
-                y, x = int(y) + r0, int(x) + c0
-                if narrow:
-                    kept = own[y + h, x + w] - own[y, x + w] - own[y + h, x] + own[y, x]
-                    shapes.append((-float(kept), miss, y, x, h, w))
-                else:
-                    shapes.append((miss, 0.0, y, x, h, w))
+    shapes: list[tuple[float, float, int, int, int, int]] = []
+    for h, w, y, x, kept in _windows(region, labels == k_room, side, lo, hi, stretch):
+        miss = abs(h * w * cell * cell - target)
+        shapes.append((-float(kept), miss, y, x, h, w) if narrow else (miss, 0.0, y, x, h, w))
     shapes.sort()
     # each rectangle is judged on the region's box and the cells around it (every wall of the two
     # rooms lies there): a floor's whole grid is many times larger
@@ -311,13 +315,7 @@ def _best_recut(
         walls = _walls(new, ids, cell, keep, min_contact)
         if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
             continue
-        # no new part of the rest one cell wide, nor a 1 m passage cut in two
-        if any(a > b for a, b in zip(_passable(rest), up_passable)):
-            continue
-        shape_up = _outline(rest, grid, (y0, x0))
-        if shape_up is None:  # the rest in pieces
-            continue
-        if not shape_defects(shape_up, rooms[up].room_type, building_type) <= up_defects:
+        if not _rest_holds(rest, cell, rooms[up].room_type, up_defects, up_passable, building_type):
             continue
         ry, rx = np.nonzero(rest)
         fill = rest.sum() / ((ry.max() - ry.min() + 1) * (rx.max() - rx.min() + 1))
@@ -330,6 +328,206 @@ def _best_recut(
     whole = labels.astype(np.int32)
     whole[y0:y1, x0:x1] = new
     return (key[0], key[1]), _redrawn(layout, whole)
+
+
+def _windows(
+    region: np.ndarray, own: np.ndarray, side: int, lo: int, hi: int, stretch: float,
+) -> list[tuple[int, int, int, int, int]]:
+    """(h, w, row, column, cells of ``own`` it holds) of every h × w rectangle of the grid's cells
+    lying inside ``region``, by its lower-left cell: both sides at least ``side`` cells, ``lo`` to
+    ``hi`` cells, its long side at most ``stretch`` times its short one."""
+    rr, cc = np.nonzero(region)
+    r0, r1, c0, c1 = rr.min(), rr.max() + 1, cc.min(), cc.max() + 1
+    # prefix sums of the region: a rectangle lies inside it when it holds h * w region cells
+    inside = np.zeros((region.shape[0] + 1, region.shape[1] + 1), dtype=np.int64)
+    inside[1:, 1:] = np.cumsum(np.cumsum(region, axis=0), axis=1)
+    # and of the room's own cells: how many of them a rectangle keeps
+    mine = np.zeros_like(inside)
+    mine[1:, 1:] = np.cumsum(np.cumsum(own, axis=0), axis=1)
+    out: list[tuple[int, int, int, int, int]] = []
+    for h in range(side, r1 - r0 + 1):
+        for w in range(side, c1 - c0 + 1):
+            if not lo <= h * w <= hi or max(h, w) > stretch * min(h, w):
+                continue
+            full = (
+                inside[r0 + h:r1 + 1, c0 + w:c1 + 1] - inside[r0:r1 + 1 - h, c0 + w:c1 + 1]
+                - inside[r0 + h:r1 + 1, c0:c1 + 1 - w] + inside[r0:r1 + 1 - h, c0:c1 + 1 - w]
+            ) == h * w
+            for y, x in zip(*np.nonzero(full)):
+                y, x = int(y) + r0, int(x) + c0
+                kept = int(mine[y + h, x + w] - mine[y, x + w] - mine[y + h, x] + mine[y, x])
+                out.append((h, w, y, x, kept))
+    return out
+
+
+def _rest_holds(
+    rest: np.ndarray,
+    cell: float,
+    room_type: str,
+    defects: set[str],
+    passable: tuple[int, int],
+    building_type: str | None,
+) -> bool:
+    """Whether what a recut leaves the room that gave (``rest``, its cells on a piece of the grid)
+    is one piece with no part one cell wide it lacked, no 1 m passage cut in two (``passable``:
+    its :func:`_passable` before) and no realism defect beyond ``defects``."""
+    if any(a > b for a, b in zip(_passable(rest), passable)):
+        return False
+    return _connected(rest) and mask_defects(rest, room_type, building_type, cell) <= defects
+
+
+def _best_suite(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    room: str,
+    inner: str,
+    up: str,
+    building_type: str | None,
+    min_contact: float,
+) -> tuple[tuple[float, float], FloorLayout] | None:
+    """((minus the suite's cells kept, the miss from its area), the layout) of the best suite
+    recut of ``room`` and ``inner``, the one room cut from it (a ward and its ensuite), in the
+    region the two share with ``up``; or None. The suite becomes a rectangle of about its area
+    (:data:`NARROW_SPAN`) at least the room's clear width each way, keeping most of its cells;
+    ``inner`` a rectangle in one of its corners (or across one end) at least its own minimum and
+    clear width, up to :data:`INNER_GROWTH` times its area, placed so that the room keeps its
+    minimum area and gains no realism defect: the arm beside ``inner`` is the room's width, or
+    narrower and a tenth of it at most, or ``inner`` a strip across the suite's end.
+
+    The room's shape (an L, or a rectangle) is judged first by :func:`_l_defects` (the realism
+    measures worked out for an L of cells) and confirmed on its cells once it passes every other
+    rule; ``inner``, a rectangle at least its width each way and no more than
+    three times as long as wide, has no realism defect."""
+    grid = layout.grid
+    labels = grid.array()
+    ids = list(grid.ids)
+    cell = grid.cell_size
+    k_room, k_inner, k_up = ids.index(room), ids.index(inner), ids.index(up)
+    suite = (labels == k_room) | (labels == k_inner)
+    region = suite | (labels == k_up)
+    rooms = {r.id: r for r in layout.rooms}
+    nodes = {n.id: n for n in graph.nodes}
+    design, inner_design = room_design(rooms[room].room_type), room_design(rooms[inner].room_type)
+
+    def least(rid: str) -> float:
+        node = nodes[rid]
+        return node.min_area if node.min_area is not None else room_design(node.room_type).min_area
+
+    side = max(3, int(np.ceil(design.min_width / cell - 1e-6)))
+    inner_side = max(3, int(np.ceil(inner_design.min_width / cell - 1e-6)))
+    cells = int(suite.sum())
+    lo = max(
+        int(np.ceil(cells * NARROW_SPAN[0] - 1e-6)),
+        int(np.ceil((least(room) + least(inner)) / (cell * cell) - 1e-6)),
+    )
+    hi = int(cells * NARROW_SPAN[1])
+    room_least = int(np.ceil(min(least(room), rooms[room].area) / (cell * cell) - 1e-6))
+    inner_lo = int(np.ceil(least(inner) / (cell * cell) - 1e-6))
+    inner_hi = int(max(rooms[inner].area, least(inner)) * INNER_GROWTH / (cell * cell))
+    inner_target = max(rooms[inner].area, least(inner)) / (cell * cell)
+    before = {
+        rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
+        for rid in (room, up)
+    }
+    allowed = before[room] - {"narrow"}
+    passable = {rid: _passable(labels == ids.index(rid)) for rid in (room, up)}
+    keep = _kept_walls(layout, graph, {room, inner, up})
+    stretch = np.inf if "elongated" in before[room] else ELONGATED_ASPECT
+    shapes = sorted(
+        (-kept, abs(h * w - cells), y, x, h, w)
+        for h, w, y, x, kept in _windows(region, suite, side, lo, hi, stretch)
+    )
+    # the inner room's sizes (h, w): its minimum and width, its proportions, about its area first
+    sizes = sorted(
+        ((eh, ew) for eh in range(inner_side, int(inner_hi // inner_side) + 1)
+         for ew in range(inner_side, int(inner_hi // inner_side) + 1)
+         if inner_lo <= eh * ew <= inner_hi and max(eh, ew) <= ELONGATED_ASPECT * min(eh, ew)),
+        key=lambda s: (abs(s[0] * s[1] - inner_target), s),
+    )
+    rr, cc = np.nonzero(region)
+    y0, y1 = max(int(rr.min()) - 1, 0), min(int(rr.max()) + 2, labels.shape[0])
+    x0, x1 = max(int(cc.min()) - 1, 0), min(int(cc.max()) + 2, labels.shape[1])
+    sub, sub_region = labels[y0:y1, x0:x1], region[y0:y1, x0:x1]
+    inner_own = (labels == k_inner)[y0:y1, x0:x1]
+    best: tuple[tuple[float, float], np.ndarray] | None = None
+    for first, miss, y, x, h, w in shapes[:MAX_SUITE_TRIED]:
+        if best is not None and first > best[0][0]:
+            break
+        rest = sub_region.copy()
+        rest[y - y0:y - y0 + h, x - x0:x - x0 + w] = False
+        if not rest.any() or rest.sum() * cell * cell + EPS < min(nodes[up].min_area or 0.0, rooms[up].area):
+            continue
+        rest_checked: bool | None = None
+        # the inner room in each corner, at each size that leaves the room its minimum and no
+        # realism defect it may not have
+        spots: list[tuple[int, float, int, int, int, int]] = []
+        for eh, ew in sizes:
+            if (
+                eh > h or ew > w or (eh == h and ew == w) or h * w - eh * ew < room_least
+                or not _l_defects(h, w, eh, ew, design.min_width, cell) <= allowed
+            ):
+                continue
+            for ey, ex in {(y, x), (y, x + w - ew), (y + h - eh, x), (y + h - eh, x + w - ew)}:
+                kept = int(inner_own[ey - y0:ey - y0 + eh, ex - x0:ex - x0 + ew].sum())
+                spots.append((-kept, abs(eh * ew - inner_target), ey, ex, eh, ew))
+        for _, _, ey, ex, eh, ew in sorted(spots)[:MAX_INNER_TRIED]:
+            new = np.where(sub_region, k_up, sub).astype(np.int32)
+            new[y - y0:y - y0 + h, x - x0:x - x0 + w] = k_room
+            new[ey - y0:ey - y0 + eh, ex - x0:ex - x0 + ew] = k_inner
+            walls = _walls(new, ids, cell, keep, min_contact)
+            if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
+                continue
+            own = new == k_room
+            if any(a > b for a, b in zip(_passable(own), passable[room])):
+                continue
+            if rest_checked is None:
+                rest_checked = _rest_holds(rest, cell, rooms[up].room_type, before[up], passable[up], building_type)
+            if not rest_checked:
+                break
+            if not mask_defects(own, rooms[room].room_type, building_type, cell) <= allowed:
+                continue
+            key = (float(first), float(miss))
+            if best is None or key < best[0]:
+                best = (key, new)
+            break
+    if best is None:
+        return None
+    key, new = best
+    whole = labels.astype(np.int32)
+    whole[y0:y1, x0:x1] = new
+    return key, _redrawn(layout, whole)
+
+
+def _l_uncovered(h: int, w: int, eh: int, ew: int, side: int) -> int:
+    """The cells of an h × w rectangle less an eh × ew one in its corner that no square ``side``
+    cells wide inside it covers: the L is two overlapping bands (beyond the corner, full width;
+    beside it, full height), each wholly covered when it is ``side`` wide each way and not at all
+    otherwise; a corner across a whole side leaves one band."""
+    top = (h - eh) * w if h - eh >= side and w >= side else 0
+    beside = (w - ew) * h if w - ew >= side and h >= side else 0
+    both = (h - eh) * (w - ew) if top and beside else 0
+    return h * w - eh * ew - (top + beside - both)
+
+
+def _l_defects(h: int, w: int, eh: int, ew: int, width: float, cell: float) -> set[str]:
+    """:func:`mansion.building.merge.shape_defects` of an h × w rectangle of cells less an eh × ew
+    one in its corner, for a room (not circulation) of clear width ``width``: the squares the
+    measures fit (their sides a hair under the width, a hair over the usable 1 m) counted on the
+    grid."""
+    total = h * w - eh * ew
+    clear = int(np.ceil((width - 2 * EPS) / cell))  # a square a hair narrower than the width
+    usable = int(np.floor((USABLE_SIDE + 2 * EPS) / cell)) + 1  # one a hair wider than 1 m
+    out: set[str] = set()
+    bh, bw = (h - eh, w) if ew == w else (h, w - ew) if eh == h else (h, w)  # the L's box
+    if max(bh, bw) > ELONGATED_ASPECT * min(bh, bw):
+        out.add("elongated")
+    if _l_uncovered(h, w, eh, ew, usable) > TOLERANCE * total + SHARE_EPS:
+        out.add("sliver")
+    if _l_uncovered(h, w, eh, ew, clear) > TOLERANCE * total + SHARE_EPS:
+        out.add("narrow")
+    if _l_uncovered(h, w, eh, ew, usable) == total:
+        out.add("unusable")
+    return out
 
 
 def _walls(
@@ -361,23 +559,6 @@ def _redrawn(layout: FloorLayout, new: np.ndarray) -> FloorLayout:
         "grid": grid.model_copy(update={"labels": new.tolist()}),
         "adjacencies": grid_adjacencies(new, list(grid.ids), grid.cell_size),
     })
-
-
-def _outline(mask: np.ndarray, grid: LabelGrid, at: tuple[int, int] = (0, 0)) -> Polygon | None:
-    """The outline of the cells ``mask`` holds (a piece of the grid from row and column ``at``),
-    in metres, as the core draws it; None when they are not one 4-connected piece."""
-    rr, cc = np.nonzero(mask)
-    crop = np.where(mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
-    r0, c0 = rr.min() + at[0], cc.min() + at[1]
-    pieces = _core.vectorise(crop)
-    if len(pieces) != 1:
-        return None
-    (ox, oy), s = grid.origin, grid.cell_size
-    _, ring, holes = pieces[0]
-    return Polygon(
-        [(ox + (x + c0) * s, oy + (y + r0) * s) for x, y in ring],
-        [[(ox + (x + c0) * s, oy + (y + r0) * s) for x, y in h] for h in holes],
-    )
 
 
 def _passable(mask: np.ndarray) -> tuple[int, int]:
@@ -539,10 +720,7 @@ def _judged(
     defects, miss = 0, 0.0
     for rid in cluster:
         mask = new == ids.index(rid)
-        shape = _outline(mask, grid)
-        if shape is None:
-            return None
-        found = shape_defects(shape, layout_types[rid], building_type)
+        found = mask_defects(mask, layout_types[rid], building_type, grid.cell_size)
         if "unusable" in found:
             return None
         defects += len(found)
