@@ -684,11 +684,7 @@ fn measure(grid: &Grid, l: Label, within: Option<BBox>, min: &Minimums) -> Optio
         0
     };
     let rule = min.rule.get(li).copied().unwrap_or(0);
-    let ruled = if rule > 1 {
-        squares.uncovered(rule)
-    } else {
-        0
-    };
+    let ruled = if rule > 1 { squares.uncovered(rule) } else { 0 };
     let usable = squares.uncovered(USABLE);
     let aspect = min.aspect.get(li).copied().unwrap_or(0.0);
     let long = if aspect > 0.0 && long_side as f64 > aspect * short_side as f64 {
