@@ -72,8 +72,11 @@ __all__ = ["recut_narrow_rooms", "recut_unfit_rooms"]
 #: A rectangle is tried up to this many times its room's planned area (or minimum, the larger).
 MAX_GROWTH = 1.6
 #: A room below its clear width is cut again at this span of its area (it keeps about its size;
-#: the floor it takes or gives is the neighbour's).
-NARROW_SPAN = (0.9, 1.15)
+#: the floor it takes or gives is the neighbour's). Measured on the two hundreds: 0.9-1.15 left
+#: 416 and 425 rooms below their width, 0.8-1.3 leaves 398 and 411 with the rooms' mean miss from
+#: their planned areas unchanged (20.0 %, 23.0 %); 0.7-1.45 leaves 373 on the first but misses
+#: more (20.4 %, 20 more rooms off by over 30 %).
+NARROW_SPAN = (0.8, 1.3)
 #: Rectangles judged per unfit room at most, closest to its planned area first (each has its
 #: shared walls measured).
 MAX_TRIED = 200
