@@ -3,6 +3,7 @@ region they were cut from, and toilet clusters laid out again (mansion.building.
 
 from __future__ import annotations
 
+import numpy as np
 from shapely.geometry import Polygon, box
 
 from mansion.building.merge import shape_defects
@@ -267,6 +268,11 @@ BBBBBBBBBBBBBBBBBB
     thin = corridor.copy()
     thin[5:8, 7:10] = False  # a 1.5 m store at the corridor's bottom edge: 0.5 m left above it
     assert _passable(thin)[0] > 0
+    # a staircase whose 1 m squares meet at one cell: every cell lies in a square, but the neck
+    # between them is 0.5 m wide (the navigation bench's building 21): two pieces
+    stair = np.array([[1, 1, 0], [1, 1, 1], [0, 1, 1]], dtype=bool)
+    assert _passable(stair) == (0, 2)
+    assert _passable(np.array([[1, 1, 0], [1, 1, 1], [1, 1, 1]], dtype=bool)) == (0, 1)
 
 
 def test_a_ward_below_its_width_beside_its_ensuite_is_cut_again_with_it_as_a_suite() -> None:

@@ -19,7 +19,8 @@ kept only when
 - the room it was cut from stays in one piece, and every relation of either room in the room graph
   keeps its shared wall: a door's (``min_contact``) where it had one, else what it had;
 - the room it was cut from gains no part that no 1 m square covers (a passage 0.5 m wide the
-  agent cannot take), nor has what such squares cover split into more pieces (:func:`_passable`);
+  agent cannot take), nor has such squares split into more pieces, two joined only where they
+  overlap by a 1 m side (:func:`_passable`);
 - the room has no rooms cut from it (their regions would move) and is no core; on a floor whose
   walls carry the floor above both rooms sit in one first-round region, so no carried wall moves.
 
@@ -565,8 +566,11 @@ def _redrawn(layout: FloorLayout, new: np.ndarray) -> FloorLayout:
 
 
 def _passable(mask: np.ndarray) -> tuple[int, int]:
-    """(cells no 1 m square inside ``mask`` covers, pieces of what such squares cover): a part one
-    cell (0.5 m) wide is a passage the agent cannot take (``mansion validate``'s navigation)."""
+    """(cells no 1 m square inside ``mask`` covers, pieces the 1 m squares make when two count as
+    joined only where they overlap by a 1 m side): a part one cell (0.5 m) wide is a passage the
+    agent cannot take (``mansion validate``'s navigation), and so is a neck where two squares
+    meet at one cell, a staircase of the grid the squares' union would call connected (building
+    21 of the hundred: a corridor joined to its lift that way, which the navigation bench found)."""
     window = mask[:-1, :-1] & mask[1:, :-1] & mask[:-1, 1:] & mask[1:, 1:]
     covered = np.zeros_like(mask)
     covered[:-1, :-1] |= window
@@ -575,8 +579,9 @@ def _passable(mask: np.ndarray) -> tuple[int, int]:
     covered[1:, 1:] |= window
     if not covered.any():
         return int(mask.sum()), 0
-    rr, cc = np.nonzero(covered)
-    crop = np.where(covered[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
+    # the squares by their lower-left cells: two whose cells are edge neighbours share a 1 m side
+    rr, cc = np.nonzero(window)
+    crop = np.where(window[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
     return int((mask & ~covered).sum()), len(_core.vectorise(crop))
 
 
