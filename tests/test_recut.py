@@ -7,7 +7,7 @@ import numpy as np
 from shapely.geometry import Polygon, box
 
 from mansion.building.merge import shape_defects
-from mansion.building.recut import _passable, recut_narrow_rooms, recut_unfit_rooms
+from mansion.building.recut import _passable, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from test_merge import graph_of, layout_of, unfit
 
 # Half-metre cells, the top line the floor's far side. C corridor (the hub), G a guest room, E its
@@ -346,3 +346,39 @@ def test_the_grid_count_of_an_l_agrees_with_the_realism_measures() -> None:
                         assert _l_defects(h, w, eh, ew, width, 0.5) == shape_defects(shape, room_type, None), (
                             room_type, h, w, eh, ew,
                         )
+
+
+def test_a_passage_half_a_metre_wide_is_widened_from_the_room_beside_it() -> None:
+    # H, a hall whose only way to the stair S is a strip one cell (0.5 m) wide past the cloakroom
+    # C (rounds laid out at 1 m rules leave such strips): the agent cannot pass. The cloakroom
+    # gives the column beside the strip, which becomes 1 m wide and joins the hall by a 1 m side
+    picture = """
+SSSSHCCCC
+SSSSHCCCC
+SSSSHCCCC
+SSSSHCCCC
+HHHHHHHHH
+HHHHHHHHH
+HHHHHHHHH
+"""
+    names = {
+        "H": ("hall", "main", "corridor", 4.0),
+        "S": ("stair_1", "stair", "stair", 4.0),
+        "C": ("cloakroom", "area", "cloakroom", 2.0),
+    }
+    graph = graph_of(names, [("hall", "stair_1"), ("hall", "cloakroom")])
+    layout = layout_of(picture, names)
+    hall = layout.grid.ids.index("hall")
+    assert _passable(layout.grid.array() == hall) == (4, 1)
+    fixed = widen_passages(layout, graph, "office")
+    labels = fixed.grid.array()
+    assert _passable(labels == hall) == (0, 1)
+    rooms = {r.id: r for r in fixed.rooms}
+    assert rooms["cloakroom"].area == 3.0 and rooms["hall"].area == layout.room("hall").area + 1.0
+    assert Polygon(rooms["cloakroom"].polygon).equals(box(3.0, 1.5, 4.5, 3.5))
+    assert rooms["stair_1"] == layout.room("stair_1")
+    assert fixed.adjacency("hall", "stair_1").longest >= 1.0  # type: ignore[union-attr]
+    # a neighbour that would fall below its minimum area gives nothing
+    tight = {**names, "C": ("cloakroom", "area", "cloakroom", 3.5)}
+    layout2 = layout_of(picture, tight)
+    assert widen_passages(layout2, graph_of(tight, [("hall", "stair_1"), ("hall", "cloakroom")]), "office") == layout2

@@ -68,7 +68,7 @@ from mansion.models.layout import FloorLayout, LabelGrid, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
 from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
-__all__ = ["recut_narrow_rooms", "recut_unfit_rooms"]
+__all__ = ["recut_narrow_rooms", "recut_unfit_rooms", "widen_passages"]
 
 #: A rectangle is tried up to this many times its room's planned area (or minimum, the larger).
 MAX_GROWTH = 1.6
@@ -83,6 +83,8 @@ NARROW_SPAN = (0.8, 1.3)
 MAX_TRIED = 200
 #: Rectangles judged per room below its clear width at most, keeping most of its cells first.
 MAX_NARROW_TRIED = 200
+#: The realism defects a widened passage (:func:`widen_passages`) may leave either room with.
+WIDENING_DEFECTS = frozenset({"narrow", "sliver", "elongated"})
 #: Rectangles judged per suite (a room below its clear width and the one room cut from it: a ward
 #: and its ensuite) at most, keeping most of the suite's cells first; and places of the room cut
 #: from it judged in full per rectangle (its corners and sizes, closest to its cells first).
@@ -192,6 +194,141 @@ def recut_narrow_rooms(
         if best is not None:
             layout = best[1]
     return layout
+
+
+def widen_passages(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    building_type: str | None = None,
+    min_contact: float = 1.0,
+    same_region: bool = False,
+) -> FloorLayout:
+    """``layout`` with each part of a room one cell (0.5 m) wide, which no 1 m square covers (a
+    hub's strip past a neighbour to a stair), made two cells wide with the row of cells beside it
+    from one neighbour, where that neighbour can give them: it is no core, stays one piece at its
+    minimum area (or what it had), gains no part one cell wide and no split of its 1 m squares,
+    and every relation of either room in the graph keeps its wall. The room must come out with
+    fewer such cells and its squares in no more pieces. Either room may come out narrow, a sliver
+    or elongated (:data:`WIDENING_DEFECTS`: a passage the agent cannot take is worse), never
+    without a usable square it had. ``same_region``: only
+    within one first-round region (floors that carry walls). Such strips come from rounds whose
+    width rules were lowered to 1 m to lay them out at all; the agent cannot pass them."""
+    nodes = {n.id: n for n in graph.nodes}
+    group = first_round_groups(graph) if same_region else None
+    cell = layout.grid.cell_size
+    ids = list(layout.grid.ids)
+    for room in sorted(r.id for r in layout.rooms):
+        if room not in nodes or nodes[room].is_core:
+            continue
+        for strip in _thin_parts(layout.grid.array() == ids.index(room)):
+            found = _widened(layout, graph, room, strip, nodes, group, building_type, min_contact, cell)
+            if found is not None:
+                layout = found
+    return layout
+
+
+def _thin_parts(mask: np.ndarray) -> list[list[tuple[int, int]]]:
+    """The 4-connected groups of the cells of ``mask`` that no 2 × 2 block of it covers, each as
+    its (row, column) cells in order."""
+    _, covered = _squares(mask)
+    left = {(int(r), int(c)) for r, c in zip(*np.nonzero(mask & ~covered))}
+    parts: list[list[tuple[int, int]]] = []
+    while left:
+        start = min(left)
+        left.discard(start)
+        part, todo = [start], [start]
+        while todo:
+            r, c = todo.pop()
+            for n in ((r + 1, c), (r - 1, c), (r, c + 1), (r, c - 1)):
+                if n in left:
+                    left.discard(n)
+                    part.append(n)
+                    todo.append(n)
+        parts.append(sorted(part))
+    return parts
+
+
+def _widened(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    room: str,
+    strip: list[tuple[int, int]],
+    nodes: dict[str, RoomNode],
+    group: dict[str, str] | None,
+    building_type: str | None,
+    min_contact: float,
+    cell: float,
+) -> FloorLayout | None:
+    """The layout with ``strip`` (cells of ``room`` one cell wide) widened by the cells beside it
+    on one side, all of one neighbour that can give them (:func:`widen_passages`), or None."""
+    labels = layout.grid.array()
+    ids = list(layout.grid.ids)
+    rows, cols = labels.shape
+    k = ids.index(room)
+    rooms = {r.id: r for r in layout.rooms}
+    before = _passable(labels == k)
+    inside = set(strip)
+    for dr, dc in ((0, 1), (0, -1), (1, 0), (-1, 0)):
+        # the strip and the room's cells up to two beyond its ends, along the strip (the widened
+        # passage must overlap the room's squares there by a 1 m side), moved one cell aside
+        ends = {
+            (r + dc * e * d, c + dr * e * d) for r, c in strip for e in (1, -1) for d in (1, 2)
+            if all(
+                0 <= r + dc * e * j < rows and 0 <= c + dr * e * j < cols
+                and labels[r + dc * e * j, c + dr * e * j] == k for j in range(1, d + 1)
+            )
+        }
+        side = sorted(
+            (r + dr, c + dc) for r, c in inside | ends
+            if not (0 <= r + dr < rows and 0 <= c + dc < cols) or labels[r + dr, c + dc] != k
+        )
+        if not side or not all(0 <= r < rows and 0 <= c < cols for r, c in side):
+            continue
+        owners = {int(labels[r, c]) for r, c in side}
+        if len(owners) != 1:
+            continue
+        (kx,) = owners
+        if kx < 0 or kx == k:
+            continue
+        other = ids[kx]
+        if other not in nodes or nodes[other].is_core or (
+            group is not None and group.get(other) != group.get(room)
+        ):
+            continue
+        new = labels.astype(np.int32)
+        for r, c in side:
+            new[r, c] = k
+        # what that leaves of the neighbour one cell wide beside the room goes with it (the end
+        # of a column the passage took)
+        stubs = [cell_ for strip_ in _thin_parts(new == kx) for cell_ in strip_]
+        if len(stubs) <= len(side):
+            for r, c in stubs:
+                if any(0 <= r + a < rows and 0 <= c + b < cols and new[r + a, c + b] == k
+                       for a, b in ((0, 1), (0, -1), (1, 0), (-1, 0))):
+                    new[r, c] = k
+        own, rest = new == k, new == kx
+        now = _passable(own)
+        if now[0] >= before[0] or now[1] > before[1] or not rest.any():
+            continue
+        given = nodes[other].min_area
+        least = room_design(rooms[other].room_type).min_area if given is None else given
+        if rest.sum() * cell * cell + EPS < min(least, rooms[other].area):
+            continue
+        # a passage the agent cannot take is worse than a room narrower than its table asks:
+        # either room may come out narrow, a sliver or elongated, never without a usable square
+        other_before = labels == kx
+        if not _rest_holds(
+            rest, cell, rooms[other].room_type, WIDENING_DEFECTS, _passable(other_before), building_type,
+        ):
+            continue
+        if "unusable" in mask_defects(own, rooms[room].room_type, building_type, cell) - mask_defects(
+            labels == k, rooms[room].room_type, building_type, cell
+        ):
+            continue
+        if _walls(new, ids, cell, _kept_walls(layout, graph, {room, other}), min_contact) is None:
+            continue
+        return _redrawn(layout, new)
+    return None
 
 
 def _best_over_donors(
@@ -368,7 +505,7 @@ def _rest_holds(
     rest: np.ndarray,
     cell: float,
     room_type: str,
-    defects: set[str],
+    defects: set[str] | frozenset[str],
     passable: tuple[int, int],
     building_type: str | None,
 ) -> bool:
@@ -571,18 +708,25 @@ def _passable(mask: np.ndarray) -> tuple[int, int]:
     agent cannot take (``mansion validate``'s navigation), and so is a neck where two squares
     meet at one cell, a staircase of the grid the squares' union would call connected (building
     21 of the hundred: a corridor joined to its lift that way, which the navigation bench found)."""
-    window = mask[:-1, :-1] & mask[1:, :-1] & mask[:-1, 1:] & mask[1:, 1:]
-    covered = np.zeros_like(mask)
-    covered[:-1, :-1] |= window
-    covered[1:, :-1] |= window
-    covered[:-1, 1:] |= window
-    covered[1:, 1:] |= window
+    window, covered = _squares(mask)
     if not covered.any():
         return int(mask.sum()), 0
     # the squares by their lower-left cells: two whose cells are edge neighbours share a 1 m side
     rr, cc = np.nonzero(window)
     crop = np.where(window[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
     return int((mask & ~covered).sum()), len(_core.vectorise(crop))
+
+
+def _squares(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(the 2 × 2 blocks of ``mask`` by their lower-left cells, the cells they cover): the 1 m
+    squares of a room on the 0.5 m grid."""
+    window = mask[:-1, :-1] & mask[1:, :-1] & mask[:-1, 1:] & mask[1:, 1:]
+    covered = np.zeros_like(mask)
+    covered[:-1, :-1] |= window
+    covered[1:, :-1] |= window
+    covered[:-1, 1:] |= window
+    covered[1:, 1:] |= window
+    return window, covered
 
 
 def _connected(mask: np.ndarray) -> bool:

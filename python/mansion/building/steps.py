@@ -48,7 +48,7 @@ from mansion.building.load_bearing import (
     retarget_first_round,
 )
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
-from mansion.building.recut import recut_narrow_rooms, recut_unfit_rooms
+from mansion.building.recut import recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
@@ -468,6 +468,11 @@ def solve_building_floor(
         mended += merged
         # and rooms below their clear width cut again as rectangles where a neighbour can give
         layout = recut_narrow_rooms(
+            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+            same_region=program.load_bearing_walls,
+        )
+        # last, passages 0.5 m wide (left by rounds laid out at 1 m rules) widened from a neighbour
+        layout = widen_passages(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
             same_region=program.load_bearing_walls,
         )
