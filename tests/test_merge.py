@@ -415,3 +415,31 @@ CCCCCCCCCCCCCCCCCCCCC
     edges = [("corridor", "flat_1"), ("flat_1", "bedroom_1"), ("flat_1", "study_1")]
     _, _, notes = merge_unfit_rooms(layout_of(picture, study), graph_of(study, edges), unfit, "apartment_block")
     assert notes == []
+
+
+def test_shape_defects_counted_on_the_cells_match_the_outline() -> None:
+    # random rooms of the 0.5 m grid, one piece each (some with holes): mask_defects, which the
+    # recuts judge shapes with, gives exactly shape_defects of the room's outline, for rooms,
+    # a ward's 3.2 m, corridors at a hospital's width and a WC's small square
+    from shapely.geometry import Polygon
+
+    from mansion import _core
+    from mansion.building.merge import mask_defects, shape_defects
+
+    rng = np.random.default_rng(7)
+    kinds = [("ward", None), ("corridor", "hospital"), ("toilet", None), ("classroom", None), ("office", "office")]
+    checked = 0
+    while checked < 1500:
+        h, w = rng.integers(2, 16, 2)
+        mask = np.zeros((h, w), bool)
+        for _ in range(rng.integers(1, 5)):
+            y, x = rng.integers(0, h), rng.integers(0, w)
+            mask[y:y + rng.integers(1, h + 1), x:x + rng.integers(1, w + 1)] = True
+        pieces = _core.vectorise(np.where(mask, 0, -1).astype(np.int32))
+        if len(pieces) != 1:
+            continue
+        _, ring, holes = pieces[0]
+        shape = Polygon([(x * CELL, y * CELL) for x, y in ring], [[(x * CELL, y * CELL) for x, y in h_] for h_ in holes])
+        for room_type, building_type in kinds:
+            assert mask_defects(mask, room_type, building_type, CELL) == shape_defects(shape, room_type, building_type)
+            checked += 1

@@ -64,7 +64,7 @@ from mansion.building.merge import (
     DOOR_WIDTH, USABLE_SIDE, grid_adjacencies, mask_defects, rooms_from_grid, shape_defects,
 )
 from mansion.models.graph import RoomGraph, RoomNode
-from mansion.models.layout import FloorLayout, LabelGrid, LayoutRoom
+from mansion.models.layout import FloorLayout, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
 from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
@@ -210,9 +210,9 @@ def widen_passages(
     and every relation of either room in the graph keeps its wall. The room must come out with
     fewer such cells and its squares in no more pieces. Either room may come out narrow, a sliver
     or elongated (:data:`WIDENING_DEFECTS`: a passage the agent cannot take is worse), never
-    without a usable square it had. ``same_region``: only
-    within one first-round region (floors that carry walls). Such strips come from rounds whose
-    width rules were lowered to 1 m to lay them out at all; the agent cannot pass them."""
+    without a usable square it had. ``same_region``: only within one first-round region (floors
+    that carry walls). Such strips come from rounds whose width rules were lowered to 1 m to lay
+    them out at all; the agent cannot pass them."""
     nodes = {n.id: n for n in graph.nodes}
     group = first_round_groups(graph) if same_region else None
     cell = layout.grid.cell_size
@@ -537,8 +537,8 @@ def _best_suite(
 
     The room's shape (an L, or a rectangle) is judged first by :func:`_l_defects` (the realism
     measures worked out for an L of cells) and confirmed on its cells once it passes every other
-    rule; ``inner``, a rectangle at least its width each way and no more than
-    three times as long as wide, has no realism defect."""
+    rule; ``inner``, a rectangle at least its width each way and no more than three times as
+    long as wide, has no realism defect."""
     grid = layout.grid
     labels = grid.array()
     ids = list(grid.ids)
