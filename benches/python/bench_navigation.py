@@ -69,6 +69,7 @@ def measure(folder: Path, radius: float, margin: float, tally: Counter[str], exa
             examples[key].append(f"{where} {cut.room}")
         blocked = nav.blocked_entrances(house, radius=radius, margin=margin)
         tally["doorsteps the furniture shuts off"] += len(blocked)
+        examples["doorsteps the furniture shuts off"] += [f"{where} {room} ({door})" for room, door in blocked]
         if index == 0:
             tally["ground floors"] += 1
             if not any(d.room0 == d.room1 for d in house.doors):
@@ -96,6 +97,7 @@ def main() -> int:
     examples: dict[str, list[str]] = {"unreachable": [], "no outside door": []}
     examples.setdefault("rooms with doors cut apart by furniture", [])
     examples.setdefault("rooms with doors cut apart by their shape", [])
+    examples.setdefault("doorsteps the furniture shuts off", [])
     with tempfile.TemporaryDirectory() as tmp:
         folders = list(args.folders)
         for seed in range(args.seed, args.seed + args.generate):

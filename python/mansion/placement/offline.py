@@ -232,6 +232,10 @@ ROOM_KINDS: dict[str, Callable[[_Room, random.Random, str], list[ObjectItem]]] =
 
 #: Words of room types (as planners write them) → the rule set that furnishes them.
 _WORDS = [
+    # a toilet lobby is the cluster's circulation (the design table's): a WC fixture there, the
+    # "toilet" rule set's, shut a lobby's door off (the navigation bench, building 54 of the
+    # hundred), so it is furnished as circulation, before "toilet" matches
+    ("toilet lobby", "circulation"),
     ("classroom", "classroom"), ("lecture", "classroom"), ("seminar", "classroom"),
     ("library", "library"), ("reading", "library"), ("archive", "library"),
     ("restaurant", "restaurant"), ("canteen", "restaurant"), ("cafeteria", "restaurant"),
