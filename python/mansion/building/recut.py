@@ -41,7 +41,10 @@ neighbour, a classroom notched by the corridor) is cut again the same way once t
 rooms are mended (:func:`recut_narrow_rooms`): a rectangle of about its own area (its area
 times :data:`NARROW_SPAN`) in the region it shares with the room it was cut from or a sibling,
 keeping as many of its cells as it can, under the same rules; it must come out of the cut no
-longer narrow. Nothing of the program changes, so these recuts are not recorded.
+longer narrow. A room with the one room cut from it (a ward and its ensuite) is cut again with it
+as a suite (:func:`_best_suite`). Nothing of the program changes, so these recuts are not
+recorded. Last, a part of a room one cell wide is widened from a neighbour
+(:func:`widen_passages`).
 
 Of the rectangles that pass, the one closest to the room's planned area wins, then the one whose
 remainder is most compact (the most of its box filled), then the region it was cut from over a
@@ -152,9 +155,10 @@ def recut_narrow_rooms(
     """``layout`` with each room below its clear width (``mansion eval realism``'s "narrow": an L
     whose arm is narrower than a ward, a classroom notched by a corridor) cut again as a
     rectangle of about its area in the region it shares with the room it was cut from or a
-    sibling beside it, under the rules of a recut; rooms with rooms cut from them, circulation
-    and cores are left. The rectangle that keeps most of the room's cells wins. Nothing of the
-    program changes, so nothing is recorded."""
+    sibling beside it, under the rules of a recut; a room with the one room cut from it (a ward
+    and its ensuite) together with it as a suite; rooms with several rooms cut from them,
+    circulation and cores are left. The rectangle that keeps most of the room's cells wins.
+    Nothing of the program changes, so nothing is recorded."""
     parent = cut_parents(graph)
     group = first_round_groups(graph) if same_region else None
     has_children = set(parent.values())
@@ -267,6 +271,7 @@ def _widened(
     k = ids.index(room)
     rooms = {r.id: r for r in layout.rooms}
     before = _passable(labels == k)
+    unusable_before = "unusable" in mask_defects(labels == k, rooms[room].room_type, building_type, cell)
     inside = set(strip)
     for dr, dc in ((0, 1), (0, -1), (1, 0), (-1, 0)):
         # the strip and the room's cells up to two beyond its ends, along the strip (the widened
@@ -310,9 +315,7 @@ def _widened(
         now = _passable(own)
         if now[0] >= before[0] or now[1] > before[1] or not rest.any():
             continue
-        given = nodes[other].min_area
-        least = room_design(rooms[other].room_type).min_area if given is None else given
-        if rest.sum() * cell * cell + EPS < min(least, rooms[other].area):
+        if rest.sum() * cell * cell + EPS < min(_least(nodes[other]), rooms[other].area):
             continue
         # a passage the agent cannot take is worse than a room narrower than its table asks:
         # either room may come out narrow, a sliver or elongated, never without a usable square
@@ -321,14 +324,17 @@ def _widened(
             rest, cell, rooms[other].room_type, WIDENING_DEFECTS, _passable(other_before), building_type,
         ):
             continue
-        if "unusable" in mask_defects(own, rooms[room].room_type, building_type, cell) - mask_defects(
-            labels == k, rooms[room].room_type, building_type, cell
-        ):
+        if not unusable_before and "unusable" in mask_defects(own, rooms[room].room_type, building_type, cell):
             continue
         if _walls(new, ids, cell, _kept_walls(layout, graph, {room, other}), min_contact) is None:
             continue
         return _redrawn(layout, new)
     return None
+
+
+def _least(node: RoomNode) -> float:
+    """A room's minimum area, m²: its own (the program's), else its type's in the design table."""
+    return node.min_area if node.min_area is not None else room_design(node.room_type).min_area
 
 
 def _best_over_donors(
@@ -410,7 +416,7 @@ def _best_recut(
     rooms = {r.id: r for r in layout.rooms}
     node = next(n for n in graph.nodes if n.id == room)
     design = room_design(node.room_type)
-    least = node.min_area if node.min_area is not None else design.min_area
+    least = _least(node)
     target = max(rooms[room].target_area, least)
     # at least its clear width each way (circulation: its building's corridors, as realism judges)
     width = corridor_width(building_type) if design.circulation else design.min_width
@@ -549,23 +555,19 @@ def _best_suite(
     rooms = {r.id: r for r in layout.rooms}
     nodes = {n.id: n for n in graph.nodes}
     design, inner_design = room_design(rooms[room].room_type), room_design(rooms[inner].room_type)
-
-    def least(rid: str) -> float:
-        node = nodes[rid]
-        return node.min_area if node.min_area is not None else room_design(node.room_type).min_area
-
+    least_room, least_inner = _least(nodes[room]), _least(nodes[inner])
     side = max(3, int(np.ceil(design.min_width / cell - 1e-6)))
     inner_side = max(3, int(np.ceil(inner_design.min_width / cell - 1e-6)))
     cells = int(suite.sum())
     lo = max(
         int(np.ceil(cells * NARROW_SPAN[0] - 1e-6)),
-        int(np.ceil((least(room) + least(inner)) / (cell * cell) - 1e-6)),
+        int(np.ceil((least_room + least_inner) / (cell * cell) - 1e-6)),
     )
     hi = int(cells * NARROW_SPAN[1])
-    room_least = int(np.ceil(min(least(room), rooms[room].area) / (cell * cell) - 1e-6))
-    inner_lo = int(np.ceil(least(inner) / (cell * cell) - 1e-6))
-    inner_hi = int(max(rooms[inner].area, least(inner)) * INNER_GROWTH / (cell * cell))
-    inner_target = max(rooms[inner].area, least(inner)) / (cell * cell)
+    room_least = int(np.ceil(min(least_room, rooms[room].area) / (cell * cell) - 1e-6))
+    inner_lo = int(np.ceil(least_inner / (cell * cell) - 1e-6))
+    inner_hi = int(max(rooms[inner].area, least_inner) * INNER_GROWTH / (cell * cell))
+    inner_target = max(rooms[inner].area, least_inner) / (cell * cell)
     before = {
         rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
         for rid in (room, up)

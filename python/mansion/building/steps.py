@@ -23,9 +23,10 @@ cannot spare) is first cut again as a rectangle inside the region it was cut fro
 (:mod:`mansion.building.recut`: a 2.2 m² bathroom inside its flat), then merged into a neighbour
 where an architect would, or dropped where the program can do without it
 (:mod:`mansion.building.merge`: a toilet lobby into its corridor, a small ward into the ward
-beside it, a flat's second bedroom into its living room), each recorded. Last, rooms below their
+beside it, a flat's second bedroom into its living room), each recorded. Then rooms below their
 clear width are cut again as rectangles where a neighbour can give them floor
-(:func:`mansion.building.recut.recut_narrow_rooms`).
+(:func:`mansion.building.recut.recut_narrow_rooms`), and last, parts of rooms one cell wide are
+widened from a neighbour (:func:`mansion.building.recut.widen_passages`).
 """
 
 from __future__ import annotations
