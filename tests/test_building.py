@@ -352,13 +352,13 @@ def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> Non
 
 
 def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
-    """When the first layout without the rooms left out is refused (here for an elongated room),
-    another seed is tried: the supermarket of the realism hundred's seed 51 keeps its first floor's
-    layout with one room out only because of that."""
+    """When the first layout without the rooms left out is refused, another seed is tried: the
+    library of the realism hundred's seed 66 lays a floor out again with one room out only
+    because of that (with one seed, the floor keeps a room below its minimum)."""
     from mansion.building import steps
     from mansion.eval.realism import bench_case
 
-    kind, floors, description = bench_case(51)
+    kind, floors, description = bench_case(66)
 
     def left_out(b: Building) -> list[str]:
         return [r for f in b.floors for r in f.relaxations if " left out" in r]
@@ -367,10 +367,10 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
         # the recut and the merge that follow would mend what either layout leaves unfit
         mp.setattr(steps, "recut_unfit_rooms", lambda layout, *_, **__: (layout, []))
         mp.setattr(steps, "merge_unfit_rooms", lambda layout, graph, *_, **__: (layout, graph, []))
-        b = generate_building(description, building_type=kind, floors=floors, seed=51)
+        b = generate_building(description, building_type=kind, floors=floors, seed=66)
         assert left_out(b)
         mp.setattr(steps, "RESOLVE_SEEDS", 1)
-        once = generate_building(description, building_type=kind, floors=floors, seed=51)
+        once = generate_building(description, building_type=kind, floors=floors, seed=66)
     assert not left_out(once)
 
     def unfit(x: Building) -> int:

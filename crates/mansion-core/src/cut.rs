@@ -877,8 +877,18 @@ pub fn cut(
     } else {
         None
     };
-    let with_slab = |b: Survivor| match &slab {
-        Some(s) if s.0 < b.0 => s.clone(),
+    // a slab layout wins over a grown one with fewer rooms below their clear width (a band of
+    // classrooms 4.5 m deep beside a corridor that kept what no classroom reached), else by energy
+    let slab_narrow = slab.as_ref().map(|s| narrow_rooms(&p, &s.2));
+    let with_slab = |b: Survivor| match (&slab, slab_narrow) {
+        (Some(s), Some(n)) => {
+            let m = narrow_rooms(&p, &b.2);
+            if n < m || (n == m && s.0 < b.0) {
+                s.clone()
+            } else {
+                b
+            }
+        }
         _ => b,
     };
     let mut kept: Option<(Survivor, usize)> = None;
@@ -955,6 +965,48 @@ fn shortfall(p: &Prepared, feats: &[RoomFeatures]) -> f64 {
         .sum()
 }
 
+/// How many of a round's rooms (the leftover too, not zones later rounds cut) have more than a
+/// tenth of their cells outside every square of their clear width lying inside them: `mansion
+/// eval realism`'s "below its width", on the grid (`CutOptions::clear`; rooms without one never
+/// count). Judged only between finalists (a slab layout and a grown winner), so its cost, a
+/// covering pass over each room's box ([`crate::topology::square_coverage`]), is paid a few
+/// times per round.
+pub fn narrow_rooms(p: &Prepared, grid: &Grid) -> usize {
+    let w = grid.w;
+    let mut narrow = 0;
+    for &l in &p.labels {
+        let side = p.opts.clear.get(l as usize).copied().unwrap_or(0);
+        if side < 2 || !p.spec.final_labels.contains(&l) {
+            continue;
+        }
+        let (mut x0, mut y0, mut x1, mut y1, mut area) = (usize::MAX, usize::MAX, 0, 0, 0usize);
+        for &c in &p.region.cells {
+            let c = c as usize;
+            if grid.cells[c] == l {
+                let (x, y) = (c % w, c / w);
+                x0 = x0.min(x);
+                y0 = y0.min(y);
+                x1 = x1.max(x);
+                y1 = y1.max(y);
+                area += 1;
+            }
+        }
+        if area == 0 {
+            continue;
+        }
+        let cover = crate::topology::square_coverage(grid, (x0, y0, x1, y1), l, side);
+        let bw = x1 + 1 - x0;
+        let covered = (y0..=y1)
+            .flat_map(|y| (x0..=x1).map(move |x| (y, x)))
+            .filter(|&(y, x)| grid.cells[y * w + x] == l && cover[(y - y0) * (bw + 1) + x - x0] > 0)
+            .count();
+        if (area - covered) * 10 > area {
+            narrow += 1;
+        }
+    }
+    narrow
+}
+
 /// How far a round's rooms are from compact rectangles: their elongation beyond 3 : 1 and their
 /// interior corners beyond four, summed (the energy's aspect and corner features, unweighted).
 fn misshapen(feats: &[RoomFeatures]) -> f64 {
@@ -966,8 +1018,8 @@ fn misshapen(feats: &[RoomFeatures]) -> f64 {
 /// tenth of a retry's candidates ([`RESEED_DIVISOR`], at [`RESEED_RETRY`]'s radii) from the
 /// moved seeds; the best survivor replaces the winner when the
 /// children's total shortfall falls and its rooms are no more misshapen ([`misshapen`]), else
-/// the next short child is tried. Deterministic (fixed order, own RNG streams). Returns the
-/// winner and, when it came from a re-cut, the round's spec as re-seeded; adds the candidates
+/// the next short child is tried (nor when it has more rooms below their clear width,
+/// [`narrow_rooms`]). Deterministic (fixed order, own RNG streams). Returns the winner and, when it came from a re-cut, the round's spec as re-seeded; adds the candidates
 /// drawn to `candidates` and `rejected`.
 fn reseeded(
     p: &Prepared,
@@ -1007,7 +1059,9 @@ fn reseeded(
         *candidates += count;
         match found {
             Some(b)
-                if shortfall(&q, &b.3) < before - 1e-9 && misshapen(&b.3) <= misshapen(&best.3) =>
+                if shortfall(&q, &b.3) < before - 1e-9
+                    && misshapen(&b.3) <= misshapen(&best.3)
+                    && narrow_rooms(&q, &b.2) <= narrow_rooms(p, &best.2) =>
             {
                 best = b;
                 moved = Some(spec);
@@ -1157,6 +1211,47 @@ mod tests {
         let p = Prepared::new(&base, &walls, &spec, &opts, 3, 0);
         let feats = energy::features(&won, &p.region, &p.labels, &p.index, &p.targets, &p.seeds);
         assert_eq!(p.reseed(&won, &feats, &[]), None);
+    }
+
+    #[test]
+    fn narrow_rooms_counts_rooms_beyond_a_tenth_outside_their_width_squares() {
+        let base = parse_rows(&["0000000000"; 6]);
+        // room 1: a strip 2 cells deep; room 2: a 4 × 4 block with a 1-cell arm of 2 cells
+        // (2 of 18 cells, beyond a tenth, outside every 3 × 3 square; 1 of 17 is not)
+        let won = parse_rows(&[
+            "1111111111",
+            "1111111111",
+            "2222000000",
+            "2222000000",
+            "2222000000",
+            "2222220000",
+        ]);
+        let walls = Walls::none(base.w, base.h);
+        let spec = round([20.0, 18.0], 22.0);
+        let judged = |clear: Vec<usize>, won: &Grid| {
+            let opts = CutOptions {
+                clear,
+                ..CutOptions::default()
+            };
+            let p = Prepared::new(&base, &walls, &spec, &opts, 3, 0);
+            narrow_rooms(&p, won)
+        };
+        // no clear widths: nothing counts (the paper's node, T2D)
+        assert_eq!(judged(vec![], &won), 0);
+        assert_eq!(judged(vec![0, 3, 3], &won), 2);
+        // a width of 2 cells: the strip holds it, the block's arm is still 1 cell
+        assert_eq!(judged(vec![0, 2, 2], &won), 1);
+        let short_arm = parse_rows(&[
+            "1111111111",
+            "1111111111",
+            "2222000000",
+            "2222000000",
+            "2222000000",
+            "2222200000",
+        ]);
+        assert_eq!(judged(vec![0, 2, 3], &short_arm), 0);
+        // the leftover counts too, judged at its own width
+        assert_eq!(judged(vec![4, 2, 3], &short_arm), 1);
     }
 
     #[test]
