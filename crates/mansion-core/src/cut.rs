@@ -979,21 +979,9 @@ pub fn narrow_rooms(p: &Prepared, grid: &Grid) -> usize {
         if side < 2 || !p.spec.final_labels.contains(&l) {
             continue;
         }
-        let (mut x0, mut y0, mut x1, mut y1, mut area) = (usize::MAX, usize::MAX, 0, 0, 0usize);
-        for &c in &p.region.cells {
-            let c = c as usize;
-            if grid.cells[c] == l {
-                let (x, y) = (c % w, c / w);
-                x0 = x0.min(x);
-                y0 = y0.min(y);
-                x1 = x1.max(x);
-                y1 = y1.max(y);
-                area += 1;
-            }
-        }
-        if area == 0 {
+        let Some(((x0, y0, x1, y1), area)) = p.region.label_box(grid, l) else {
             continue;
-        }
+        };
         let cover = crate::topology::square_coverage(grid, (x0, y0, x1, y1), l, side);
         let bw = x1 + 1 - x0;
         let covered = (y0..=y1)

@@ -56,6 +56,28 @@ impl Region {
         self.cells.len()
     }
 
+    /// The bounding box `(x0, y0, x1, y1)` (inclusive) and the cell count of the region's cells
+    /// that `grid` labels `label` in a candidate, or None when it has none.
+    pub fn label_box(
+        &self,
+        grid: &Grid,
+        label: Label,
+    ) -> Option<((usize, usize, usize, usize), usize)> {
+        let (mut x0, mut y0, mut x1, mut y1, mut n) = (usize::MAX, usize::MAX, 0, 0, 0usize);
+        for &c in &self.cells {
+            let c = c as usize;
+            if grid.cells[c] == label {
+                let (x, y) = (c % grid.w, c / grid.w);
+                x0 = x0.min(x);
+                y0 = y0.min(y);
+                x1 = x1.max(x);
+                y1 = y1.max(y);
+                n += 1;
+            }
+        }
+        (n > 0).then_some(((x0, y0, x1, y1), n))
+    }
+
     pub fn is_empty(&self) -> bool {
         self.cells.is_empty()
     }

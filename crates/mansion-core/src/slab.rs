@@ -653,17 +653,9 @@ pub fn usable(p: &Prepared, grid: &Grid) -> bool {
             return square;
         }
         // and a zone no longer than ZONE_ASPECT times its width
-        let (mut x0, mut y0, mut x1, mut y1) = (usize::MAX, usize::MAX, 0, 0);
-        for &c in &p.region.cells {
-            let c = c as usize;
-            if grid.cells[c] == l {
-                let (x, y) = (c % w, c / w);
-                x0 = x0.min(x);
-                y0 = y0.min(y);
-                x1 = x1.max(x);
-                y1 = y1.max(y);
-            }
-        }
+        let Some(((x0, y0, x1, y1), _)) = p.region.label_box(grid, l) else {
+            return false;
+        };
         let (a, b) = ((x1 + 1 - x0) as f64, (y1 + 1 - y0) as f64);
         a.max(b) <= ZONE_ASPECT * a.min(b)
     })

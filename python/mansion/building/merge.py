@@ -61,7 +61,7 @@ from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import Adjacency, FloorLayout, LabelGrid, LayoutRoom
-from mansion.models.room_design import ELONGATED_ASPECT, SANITARY_TYPES, corridor_width, design_key, room_design
+from mansion.models.room_design import ELONGATED_ASPECT, SANITARY_TYPES, design_key, needed_width, room_design
 from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, box_aspect, fits_square, mostly_narrower
 
 __all__ = [
@@ -89,15 +89,16 @@ def grid_adjacencies(labels: np.ndarray, ids: list[str], cell: float) -> list[Ad
 
 def shape_defects(shape: Polygon, room_type: str, building_type: str | None) -> set[str]:
     """``mansion eval realism``'s defects of one room's shape: "elongated" (not circulation),
-    "sliver", "narrow" (below its clear width: the building's corridor width for circulation,
-    else the design table's) and "unusable" (no usable square)."""
+    "sliver", "narrow" (below its clear width: circulation's its building's corridor width, else
+    the design table's, :func:`~mansion.models.room_design.needed_width`) and "unusable" (no
+    usable square)."""
     design = room_design(room_type)
     out: set[str] = set()
     if not design.circulation and box_aspect(shape) > ELONGATED_ASPECT:
         out.add("elongated")
     if mostly_narrower(shape, USABLE_SIDE, inclusive=True):
         out.add("sliver")
-    need = corridor_width(building_type) if design.circulation else design.min_width
+    need = needed_width(room_type, building_type)
     if mostly_narrower(shape, need):
         out.add("narrow")
     if not fits_square(shape, USABLE_SIDE, inclusive=True):
@@ -144,7 +145,7 @@ def mask_defects(mask: np.ndarray, room_type: str, building_type: str | None, ce
     usable = covered(USABLE_SIDE + 2 * EPS)  # inclusive: parts exactly 1 m wide are slivers
     if total - usable > TOLERANCE * total + SHARE_EPS * total:
         out.add("sliver")
-    need = corridor_width(building_type) if design.circulation else design.min_width
+    need = needed_width(room_type, building_type)
     if total - covered(need - 2 * EPS) > TOLERANCE * total + SHARE_EPS * total:
         out.add("narrow")
     if usable == 0:

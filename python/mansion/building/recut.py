@@ -68,7 +68,7 @@ from mansion.building.merge import (
 )
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout, LayoutRoom
-from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
+from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
 from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
 __all__ = ["recut_narrow_rooms", "recut_unfit_rooms", "widen_passages"]
@@ -419,7 +419,7 @@ def _best_recut(
     least = _least(node)
     target = max(rooms[room].target_area, least)
     # at least its clear width each way (circulation: its building's corridors, as realism judges)
-    width = corridor_width(building_type) if design.circulation else design.min_width
+    width = needed_width(node.room_type, building_type)
     side = max(3, int(np.ceil(width / cell - 1e-6)))
     lo, hi = int(np.ceil(least / (cell * cell) - 1e-6)), int(target * MAX_GROWTH / (cell * cell))
     if narrow:

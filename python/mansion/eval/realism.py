@@ -10,7 +10,8 @@ The same measures, from each room's polygon in metres, for generated buildings a
   corridors, halls, lobbies, balconies — is long by nature and excluded);
 - **no square**: no square a hair over 1 m × 1 m fits anywhere in the room (it cannot be used);
 - **below area / below width**: the room is smaller than its type's minimum area, or more than
-  10 % of it is narrower than its type's minimum clear width (:mod:`mansion.models.room_design`);
+  10 % of it is narrower than its type's minimum clear width (:mod:`mansion.models.room_design`;
+  circulation's: its building type's corridor width, :func:`~mansion.models.room_design.needed_width`);
 - **no corridor door**: a room the table wants on a corridor has no access to circulation (a
   circulation room, or a room that serves others: the floor's hub or a zone's sub-hub, as an
   apartment's living room serves its bedrooms as a hall does). Generated floors: an ``access`` edge of the room graph whose two rooms share at least
@@ -42,7 +43,7 @@ from shapely.geometry.base import BaseGeometry
 from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError
 from mansion.models.building import Building
-from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, design_key, room_design
+from mansion.models.room_design import ELONGATED_ASPECT, design_key, needed_width, room_design
 from mansion.models.room_shape import (
     EPS as _EPS,
     SHARE_EPS as _SHARE_EPS,
@@ -263,7 +264,7 @@ def summarise(rooms: Iterable[RoomRecord], buildings: int = 0, narrow: float = N
             f.elongated += box_aspect(shape) > MAX_BOX_ASPECT
         if not fits_square(shape, narrow, inclusive=True):
             f.no_square += 1
-        need = corridor_width(r.building_type) if d.circulation and r.building_type != "t2d" else d.min_width
+        need = d.min_width if r.building_type == "t2d" else needed_width(r.room_type, r.building_type)
         small = shape.area < d.min_area - _EPS
         thin = mostly_narrower(shape, need)
         f.below_area += small

@@ -22,6 +22,7 @@ from mansion.models.room_design import (
     ELONGATED_ASPECT,
     corridor_width,
     design_key,
+    needed_width,
     room_design,
 )
 from mansion.planning.vocabulary import room_kind
@@ -76,7 +77,7 @@ def design_minimums(room_type: str, building_type: str | None) -> dict[str, floa
     box proportions beyond which a room counts as elongated. The same figures as
     ``mansion eval realism`` measures."""
     d = room_design(room_type)
-    width = corridor_width(building_type) if d.circulation else d.min_width
+    width = needed_width(room_type, building_type)
     return {
         "min_area": d.min_area,
         "clear_width": width,
