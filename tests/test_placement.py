@@ -118,6 +118,8 @@ def test_bad_input_is_a_typed_error_naming_the_room() -> None:
     ("main corridor", "circulation"), ("gift shop", "shop"), ("storage", "generic"),
     # a toilet lobby is circulation (no WC fixture to shut its door off); its toilets are toilets
     ("toilet_lobby", "circulation"), ("accessible_toilet", "toilet"), ("wc", "toilet"),
+    # an ensuite is a bathroom, not a suite (a master suite is a bedroom)
+    ("ensuite", "toilet"), ("Ensuite", "toilet"), ("master_suite", "bedroom"),
 ])
 def test_room_kinds(room_type: str, kind: str) -> None:
     assert room_kind(room_type) == kind

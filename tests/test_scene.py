@@ -830,6 +830,25 @@ def test_furniture_checks_share_the_grown_obstacles() -> None:
         navigation.blocked_entrances(house, obstacles=navigation.Obstacles.of(house, 0.2))
 
 
+def test_a_gap_narrower_than_the_agent_has_no_doorstep_to_shut_off() -> None:
+    """A way narrower than the agent's passage (a 0.5 m gap where two rooms' walls leave an
+    opening) is no way in, as for the furnishing and the doors a room must connect: furniture
+    before it shuts nothing off (supermarket 93 of the hundred: shelves beside a 0.5 m gap)."""
+    from mansion.scene import navigation
+
+    def house(width: float) -> House:
+        h = box_house(
+            {"d": (0, 3, 9, 5), "a": (0, 0, 3, 3), "b": (3, 0, 6, 3), "c": (6, 0, 9, 3)},
+            [("d", "a", 1.0), ("d", "c", 1.0), ("a", "b", width), ("b", "c", 1.0)], (4.5, 4.0),
+            [{"id": "b|dresser", "assetId": "Dresser_209_1", "room": "b", "kinematic": True,
+              "position": {"x": 3.3, "y": 0.35, "z": 1.5}, "rotation": {"x": 0, "y": 90, "z": 0}}],
+        )
+        return House.model_validate(h)
+
+    assert [room for room, _ in navigation.blocked_entrances(house(1.0))] == ["b"]
+    assert navigation.blocked_entrances(house(0.5)) == []
+
+
 def test_house_text_is_json_dumps_but_for_small_numbers_written_in_full() -> None:
     """Every house file goes through house_text: pydantic's serializer, with json.dumps's
     layout and ASCII escapes, which reads back to the same values."""

@@ -236,6 +236,9 @@ _WORDS = [
     # "toilet" rule set's, shut a lobby's door off (the navigation bench, building 54 of the
     # hundred), so it is furnished as circulation, before "toilet" matches
     ("toilet lobby", "circulation"),
+    # an ensuite is a ward's or a guest room's bathroom, not a suite: furnished as a bedroom (bed,
+    # desk and dresser in 8 m²) one shut its own door off (the navigation bench, hospital 48)
+    ("ensuite", "toilet"), ("en suite", "toilet"),
     ("classroom", "classroom"), ("lecture", "classroom"), ("seminar", "classroom"),
     ("library", "library"), ("reading", "library"), ("archive", "library"),
     ("restaurant", "restaurant"), ("canteen", "restaurant"), ("cafeteria", "restaurant"),

@@ -49,14 +49,14 @@ from mansion.scene.navigation import MARGIN
 
 __all__ = ["APRON", "CLEAR", "FurnishJob", "furnish_houses"]
 
-#: Depth kept free beyond a door on the side its leaf does not sweep, and along an opening (m):
-#: an agent of radius 0.25 m stands in it clear of the jambs.
 #: Radius (m) of the agent the scenes are furnished for: AI2-THOR's agent is 0.25 m, but
 #: navigability is judged at 0.3 m too (issue 17), so furniture leaves 2 · (0.3 + 0.05) = 0.7 m
 #: passages. The placement engine alone (the paper's room benchmarks) keeps 0.25 m.
 FURNISH_RADIUS = 0.3
-
-APRON = 0.6
+#: Depth kept free beyond a door on the side its leaf does not sweep, and along an opening (m):
+#: the passage that agent needs, 0.7 m. At 0.6 m (an agent of 0.25 m) a ward's bed 0.63 m from
+#: the wall left no room to step through its ensuite's door (the navigation bench, hospital 48).
+APRON = 2 * (FURNISH_RADIUS + MARGIN)
 #: Side of the square kept free around the spawn and each core landing (m).
 CLEAR = 0.6
 

@@ -414,9 +414,9 @@ def blocked_entrances(
     house: House, *, radius: float = AGENT_RADIUS, margin: float = MARGIN,
     start: Pt | None = None, space: BaseGeometry | None = None, obstacles: Obstacles | None = None,
 ) -> list[tuple[str, str]]:
-    """(room, entrance id) of every door or opening whose doorstep in that room the agent reached
-    from the spawn with the objects removed but no longer reaches with the floor objects in place
-    (the furniture shuts it off). Empty when the house has no usable spawn. ``space``: as for
+    """(room, entrance id) of every door or opening the agent can pass (:func:`_passable`) whose
+    doorstep in that room it reached from the spawn with the objects removed but no longer
+    reaches with the floor objects in place (the furniture shuts it off). Empty when the house has no usable spawn. ``space``: as for
     :func:`unreachable_rooms` (the free space without objects); ``obstacles`` as for
     :func:`disconnected_entrances`."""
     if start is None:
@@ -449,7 +449,10 @@ def blocked_entrances(
     pockets = STRtree([g for g in furnished if g is not full])
     polys = _room_polygons(house)
     out = []
-    for rid, ways in room_entrances(house).items():
+    for rid, all_ways in room_entrances(house).items():
+        # a gap narrower than the agent is no way in (as the furnishing and
+        # :func:`disconnected_entrances` hold): its doorstep is not the agent's to reach
+        ways = _passable(all_ways, c)
         poly = polys.get(rid)
         if poly is None or not ways:
             continue
