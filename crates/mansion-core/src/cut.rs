@@ -1007,8 +1007,9 @@ fn misshapen(feats: &[RoomFeatures]) -> f64 {
 /// moved seeds; the best survivor replaces the winner when the
 /// children's total shortfall falls and its rooms are no more misshapen ([`misshapen`]), else
 /// the next short child is tried (nor when it has more rooms below their clear width,
-/// [`narrow_rooms`]). Deterministic (fixed order, own RNG streams). Returns the winner and, when it came from a re-cut, the round's spec as re-seeded; adds the candidates
-/// drawn to `candidates` and `rejected`.
+/// [`narrow_rooms`]). Deterministic (fixed order, own RNG streams). Returns the winner and, when
+/// it came from a re-cut, the round's spec as re-seeded; adds the candidates drawn to
+/// `candidates` and `rejected`.
 fn reseeded(
     p: &Prepared,
     best: Survivor,

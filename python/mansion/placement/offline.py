@@ -236,8 +236,8 @@ _WORDS = [
     # "toilet" rule set's, shut a lobby's door off (the navigation bench, building 54 of the
     # hundred), so it is furnished as circulation, before "toilet" matches
     ("toilet lobby", "circulation"),
-    # an ensuite is a ward's or a guest room's bathroom, not a suite: furnished as a bedroom (bed,
-    # desk and dresser in 8 m²) one shut its own door off (the navigation bench, hospital 48)
+    # an ensuite is a ward's or a guest room's bathroom, not a suite: "suite" matched it, and
+    # hospital 48's ward ensuites got a bed, a desk and a dresser in 8 m²
     ("ensuite", "toilet"), ("en suite", "toilet"),
     ("classroom", "classroom"), ("lecture", "classroom"), ("seminar", "classroom"),
     ("library", "library"), ("reading", "library"), ("archive", "library"),

@@ -416,9 +416,9 @@ def blocked_entrances(
 ) -> list[tuple[str, str]]:
     """(room, entrance id) of every door or opening the agent can pass (:func:`_passable`) whose
     doorstep in that room it reached from the spawn with the objects removed but no longer
-    reaches with the floor objects in place (the furniture shuts it off). Empty when the house has no usable spawn. ``space``: as for
-    :func:`unreachable_rooms` (the free space without objects); ``obstacles`` as for
-    :func:`disconnected_entrances`."""
+    reaches with the floor objects in place (the furniture shuts it off). Empty when the house
+    has no usable spawn. ``space``: as for :func:`unreachable_rooms` (the free space without
+    objects); ``obstacles`` as for :func:`disconnected_entrances`."""
     if start is None:
         pose = spawn_pose(house)
         if pose is None:
