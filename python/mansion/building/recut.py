@@ -169,7 +169,7 @@ def recut_narrow_rooms(
         shape = Polygon(r.polygon, r.holes)
         x0, y0, x1, y1 = shape.bounds
         # a rectangle at least its width each way is not narrow (most rooms: no opening to draw)
-        if abs(shape.area - (x1 - x0) * (y1 - y0)) < EPS and min(x1 - x0, y1 - y0) + EPS >= room_design(r.room_type).min_width:
+        if abs(shape.area - (x1 - x0) * (y1 - y0)) < EPS and min(x1 - x0, y1 - y0) + EPS >= needed_width(r.room_type, building_type):
             return False
         return "narrow" in shape_defects(shape, r.room_type, building_type)
 
