@@ -227,6 +227,45 @@ CCCCCCCCCCCCCCCC
     assert recut_narrow_rooms(layout, graph, "office", same_region=True) == layout
 
 
+def test_a_room_its_own_region_cannot_mend_takes_floor_from_another_room_beside_it() -> None:
+    # H, a head office of 6 m² (its minimum 9 m²) cut from R, the admin suite's reception, which
+    # is at its own minimum and cannot give; N, the canteen beside it, cut from the entrance hall
+    # C, can: the head office is cut again as 3 m x 3 m with the canteen's floor, and the canteen
+    # keeps the rest
+    picture = """
+RRRRRRHHHHNNNNNNNNNNNN
+RRRRRRHHHHNNNNNNNNNNNN
+RRRRRRHHHHNNNNNNNNNNNN
+RRRRRRHHHHNNNNNNNNNNNN
+RRRRRRHHHHNNNNNNNNNNNN
+RRRRRRHHHHNNNNNNNNNNNN
+CCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("entrance_hall", "main", "entrance_hall", 4.0),
+        "R": ("admin", "area", "reception", 9.0),
+        "H": ("head_office", "area", "head_office", 9.0),
+        "N": ("canteen", "area", "canteen", 8.0),
+    }
+    graph = graph_of(names, [("entrance_hall", "admin"), ("admin", "head_office"), ("entrance_hall", "canteen")])
+    layout = layout_of(picture, names)
+    assert set(unfit(layout, graph)) == {"head_office"}
+    fixed, notes = recut_unfit_rooms(layout, graph, unfit, "school")
+    assert notes == [
+        "head_office cut again with floor from canteen at 9.0 m² (head_office laid out at 6.0 m², below its"
+        " 9 m² minimum; it was 6.0 m²)"
+    ]
+    rooms = {r.id: r for r in fixed.rooms}
+    assert Polygon(rooms["head_office"].polygon).equals(box(3.0, 1.5, 6.0, 4.5))
+    assert rooms["admin"].area == 9.0 and rooms["canteen"].area == 15.0
+    assert fixed.adjacency("admin", "head_office").longest >= 1.0  # type: ignore[union-attr]
+    assert fixed.adjacency("entrance_hall", "canteen").longest >= 1.0  # type: ignore[union-attr]
+    # on a floor that carries walls the admin suite and the canteen are two first-round regions
+    assert recut_unfit_rooms(layout, graph, unfit, "school", same_region=True) == (layout, [])
+
+
 def test_no_recut_leaves_a_passage_one_cell_wide() -> None:
     # S, a store of 0.5 m² (its minimum 2 m²) cut from a corridor 2 m wide between two stores D
     # and E at its ends, the offices A and B beside it at their minimum areas: a store of its

@@ -6,8 +6,9 @@ toilet from its toilet lobby) shares that region with the room that keeps the re
 layout leaves the room unfit (below its minimum area, or with no usable square: a 2.5 m² ensuite,
 an accessible toilet 1 m wide), an architect draws it again inside the same region as a rectangle
 of its size, and the room it was cut from keeps the rest; or takes the floor from a sibling
-beside it, cut from the same region, that can give it. Nothing of the program is lost, so this
-is tried before a merge or a drop (:mod:`mansion.building.merge`).
+beside it, cut from the same region, that can give it; or, last, from any other room beside it
+(a head office of an admin suite from the canteen next door). Nothing of the program is lost, so
+this is tried before a merge or a drop (:mod:`mansion.building.merge`).
 
 The new room is a rectangle of the region's cells, at least its minimum area and its clear width
 on each side (the design table's), as close to its planned area as the region allows. A recut is
@@ -39,8 +40,8 @@ that is not the hub, with two to :data:`MAX_CLUSTER` rooms none of which has roo
 A room below its clear width (``mansion eval realism``'s "narrow": an arm 1 m wide along its
 neighbour, a classroom notched by the corridor) is cut again the same way once the floor's unfit
 rooms are mended (:func:`recut_narrow_rooms`): a rectangle of about its own area (its area
-times :data:`NARROW_SPAN`) in the region it shares with the room it was cut from or a sibling,
-keeping as many of its cells as it can, under the same rules; it must come out of the cut no
+times :data:`NARROW_SPAN`) in the region it shares with the room it was cut from, a sibling or
+another room beside it, keeping as many of its cells as it can, under the same rules; it must come out of the cut no
 longer narrow. A room with the one room cut from it (a ward and its ensuite) is cut again with it
 as a suite (:func:`_best_suite`). Nothing of the program changes, so these recuts are not
 recorded. Last, a part of a room one cell wide is widened from a neighbour
@@ -48,7 +49,7 @@ recorded. Last, a part of a room one cell wide is widened from a neighbour
 
 Of the rectangles that pass, the one closest to the room's planned area wins, then the one whose
 remainder is most compact (the most of its box filled), then the region it was cut from over a
-sibling, then the lowest, leftmost one. Each recut is recorded in the floor's ``relaxations``
+sibling, a sibling over another room, then the lowest, leftmost one. Each recut is recorded in the floor's ``relaxations``
 ("bathroom_2 cut again from bay_3 at 5.2 m² (bathroom_2 laid out at 2.2 m², below its 3.5 m²
 minimum; it was 2.2 m²)").
 """
@@ -106,7 +107,7 @@ def recut_unfit_rooms(
     same_region: bool = False,
 ) -> tuple[FloorLayout, list[str]]:
     """Cut each room ``unfit`` names (id → why) again inside the region it shares with the room
-    it was cut from (or with a sibling beside it), where the module's rules allow; the smallest
+    it was cut from (or with a sibling or another room beside it), where the module's rules allow; the smallest
     unfit room first. ``same_region``: only within one first-round region (floors that carry
     walls). Returns the layout and a relaxation note per recut."""
     notes: list[str] = []
@@ -154,8 +155,8 @@ def recut_narrow_rooms(
 ) -> FloorLayout:
     """``layout`` with each room below its clear width (``mansion eval realism``'s "narrow": an L
     whose arm is narrower than a ward, a classroom notched by a corridor) cut again as a
-    rectangle of about its area in the region it shares with the room it was cut from or a
-    sibling beside it, under the rules of a recut; a room with the one room cut from it (a ward
+    rectangle of about its area in the region it shares with the room it was cut from, a sibling
+    or another room beside it, under the rules of a recut; a room with the one room cut from it (a ward
     and its ensuite) together with it as a suite; rooms with several rooms cut from them,
     circulation and cores are left. The rectangle that keeps most of the room's cells wins.
     Nothing of the program changes, so nothing is recorded."""
@@ -351,7 +352,7 @@ def _best_over_donors(
     inner: str | None = None,
 ) -> tuple[str, FloorLayout] | None:
     """(the room that gives, the layout) of the best recut of ``room`` over :func:`_donors`, the
-    region it was cut from winning ties (then the siblings in order); ``group``: each room's
+    region it was cut from winning ties (then the siblings, then the other rooms, in order); ``group``: each room's
     first-round region where floors carry walls (no floor crosses between two), else None.
     ``inner``: the one room cut from ``room``, recut with it as a suite (:func:`_best_suite`)."""
     rooms = {r.id for r in layout.rooms}
@@ -383,12 +384,17 @@ def _donors(
     layout: FloorLayout, room: str, up: str, parent: dict[str, str], nodes: dict[str, RoomNode]
 ) -> list[str]:
     """The rooms ``room`` may take floor from: the region it was cut from, then each sibling
-    beside it (cut from the same region) sharing a door's width of wall."""
-    return [up] + sorted(
+    beside it (cut from the same region), then any other room beside it (a canteen beside the
+    head office of an admin suite) but one cut from ``room`` itself, each sharing a door's width
+    of wall and no core. Cousins give last: the wall between two branches of the cut tree moves
+    only where their own regions cannot mend the room (seeds 0-99: 352 -> 338 rooms below their
+    width, the one room without a usable square mended; seeds 100-199: 384 -> 371)."""
+    beside = sorted(
         other for a in layout.adjacencies if room in (a.a, a.b) and a.longest + EPS >= DOOR_WIDTH
         for other in [a.b if a.a == room else a.a]
-        if other in nodes and not nodes[other].is_core and parent.get(other) == up
+        if other in nodes and not nodes[other].is_core and other != up and parent.get(other) != room
     )
+    return [up] + [o for o in beside if parent.get(o) == up] + [o for o in beside if parent.get(o) != up]
 
 
 def _best_recut(
