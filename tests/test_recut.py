@@ -7,7 +7,7 @@ import numpy as np
 from shapely.geometry import Polygon, box
 
 from mansion.building.merge import shape_defects
-from mansion.building.recut import _passable, recut_narrow_rooms, recut_unfit_rooms, widen_passages
+from mansion.building.recut import _passable, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from test_merge import graph_of, layout_of, unfit
 
 # Half-metre cells, the top line the floor's far side. C corridor (the hub), G a guest room, E its
@@ -264,6 +264,75 @@ CCCCCCCCCCCCCCCCCCCCCC
     assert fixed.adjacency("entrance_hall", "canteen").longest >= 1.0  # type: ignore[union-attr]
     # on a floor that carries walls the admin suite and the canteen are two first-round regions
     assert recut_unfit_rooms(layout, graph, unfit, "school", same_region=True) == (layout, [])
+
+
+def test_a_strip_below_the_rooms_width_is_handed_to_the_room_beside_it() -> None:
+    # O, an office with an arm 1.5 m deep along the top of the meeting room M (a quarter of it
+    # narrower than its 2.4 m): the arm goes to the meeting room, which comes out 4 m x 4.5 m, and
+    # the office keeps the 4 m x 4.5 m its width's squares cover, with its door to the corridor
+    picture = """
+OOOOOOOOOOOOOOOO
+OOOOOOOOOOOOOOOO
+OOOOOOOOOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+CCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "O": ("office_1", "area", "office", 8.0),
+        "M": ("meeting_room_1", "area", "meeting_room", 10.0),
+    }
+    layout = layout_of(picture, names)
+    graph = graph_of(names, [("corridor", "office_1"), ("corridor", "meeting_room_1")])
+    before = {r.id: r for r in layout.rooms}
+    assert "narrow" in shape_defects(Polygon(before["office_1"].polygon), "office", "office")
+    fixed = hand_off_strips(layout, graph, "office")
+    rooms = {r.id: r for r in fixed.rooms}
+    assert Polygon(rooms["office_1"].polygon).equals(box(4.0, 1.5, 8.0, 6.0))
+    assert Polygon(rooms["meeting_room_1"].polygon).equals(box(0.0, 1.5, 4.0, 6.0))
+    for rid, kind in (("office_1", "office"), ("meeting_room_1", "meeting_room")):
+        assert not shape_defects(Polygon(rooms[rid].polygon), kind, "office")
+        assert fixed.adjacency("corridor", rid).longest >= 1.0  # type: ignore[union-attr]
+    assert rooms["corridor"].area == before["corridor"].area
+    # a lift cannot take the arm, so nothing moves; nor on a floor that carries walls, where the
+    # two rooms are two first-round regions
+    lift = {**names, "M": ("elevator_1", "elevator", "elevator", 1.0)}
+    lifted = layout_of(picture, lift)
+    assert hand_off_strips(lifted, graph_of(lift, [("corridor", "office_1")]), "office") == lifted
+    assert hand_off_strips(layout, graph, "office", same_region=True) == layout
+
+
+def test_a_strip_no_neighbour_can_take_stays_and_nothing_moves() -> None:
+    # the office reaches the corridor only through its arm: the meeting room cannot take the arm
+    # (the office would lose its door), nor can the 2 m² corridor (it would grow past 1.6 times
+    # its planned area into what is left over); so the office stays narrow and nothing moves
+    picture = """
+OOOOOOOOOOOOOOOO
+OOOOOOOOOOOOOOOO
+OOOOOOOOOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+MMMMMMMMOOOOOOOO
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "O": ("office_1", "area", "office", 8.0),
+        "M": ("meeting_room_1", "area", "meeting_room", 10.0),
+    }
+    door = "CCCCCCCC........\nCCCCCCCC........\n"
+    layout = layout_of(door + picture.strip() + "\n", names)
+    graph = graph_of(names, [("corridor", "office_1"), ("office_1", "meeting_room_1")])
+    assert hand_off_strips(layout, graph, "office") == layout
 
 
 def test_no_recut_leaves_a_passage_one_cell_wide() -> None:

@@ -66,7 +66,7 @@ from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, box_aspect, fit
 
 __all__ = [
     "DOOR_WIDTH", "USABLE_SIDE", "grid_adjacencies", "mask_defects", "merge_unfit_rooms", "rooms_from_grid",
-    "shape_defects",
+    "shape_defects", "square_cover",
 ]
 
 #: Shared wall (m) two rooms need to be merged: a door's width, as ``mansion eval realism`` asks
@@ -109,10 +109,8 @@ def shape_defects(shape: Polygon, room_type: str, building_type: str | None) -> 
 def mask_defects(mask: np.ndarray, room_type: str, building_type: str | None, cell: float) -> set[str]:
     """:func:`shape_defects` of the room whose cells ``mask`` holds (one piece; a grid of
     ``cell``-metre cells), counted on the grid: the same sets, many times faster than buffering
-    its outline. A square a hair narrower (or wider) than a width fits wherever an aligned block
-    of that many cells, rounded up, fits, and the squares of a union of cells cover exactly the
-    blocks that do (a square off the grid spans whole cells of the shape on every row and column
-    it touches); so each share is of cells, and the elongation is the cells' box."""
+    its outline (each share is of cells, see :func:`square_cover`, and the elongation is the
+    cells' box)."""
     rr, cc = np.nonzero(mask)
     crop = mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1]
     h, w = crop.shape
@@ -121,36 +119,43 @@ def mask_defects(mask: np.ndarray, room_type: str, building_type: str | None, ce
     out: set[str] = set()
     if not design.circulation and max(h, w) > ELONGATED_ASPECT * min(h, w):
         out.add("elongated")
-    # prefix sums of the cells: a block of m × m lies inside when it holds m * m of them
-    inside = np.zeros((h + 1, w + 1), dtype=np.int64)
-    inside[1:, 1:] = np.cumsum(np.cumsum(crop, axis=0), axis=1)
-
-    def covered(width: float) -> int:
-        m = int(np.ceil(width / cell - 1e-9))
-        if m > h or m > w:
-            return 0
-        if m <= 1:
-            return total
-        fits = (inside[m:, m:] - inside[:-m, m:] - inside[m:, :-m] + inside[:-m, :-m]) == m * m
-        # each fitting block stamped onto a difference array: its prefix sums count the blocks
-        # covering each cell
-        stamp = np.zeros((h + 1, w + 1), dtype=np.int64)
-        bh, bw = fits.shape
-        stamp[:bh, :bw] += fits
-        stamp[m:m + bh, :bw] -= fits
-        stamp[:bh, m:m + bw] -= fits
-        stamp[m:m + bh, m:m + bw] += fits
-        return int((np.cumsum(np.cumsum(stamp, axis=0), axis=1)[:h, :w] > 0).sum())
-
-    usable = covered(USABLE_SIDE + 2 * EPS)  # inclusive: parts exactly 1 m wide are slivers
+    # inclusive: parts exactly 1 m wide are slivers
+    usable = int(square_cover(crop, USABLE_SIDE + 2 * EPS, cell).sum())
     if total - usable > TOLERANCE * total + SHARE_EPS * total:
         out.add("sliver")
     need = needed_width(room_type, building_type)
-    if total - covered(need - 2 * EPS) > TOLERANCE * total + SHARE_EPS * total:
+    if total - int(square_cover(crop, need - 2 * EPS, cell).sum()) > TOLERANCE * total + SHARE_EPS * total:
         out.add("narrow")
     if usable == 0:
         out.add("unusable")
     return out
+
+
+def square_cover(mask: np.ndarray, width: float, cell: float) -> np.ndarray:
+    """The cells of ``mask`` (a grid of ``cell``-metre cells) that some square ``width`` metres
+    wide lying inside it covers. A square a hair narrower (or wider) than a width fits wherever an
+    aligned block of that many cells, rounded up, fits, and the squares of a union of cells cover
+    exactly the blocks that do (a square off the grid spans whole cells of the shape on every row
+    and column it touches)."""
+    h, w = mask.shape
+    m = int(np.ceil(width / cell - 1e-9))
+    if m <= 1:
+        return mask.copy()
+    if m > h or m > w:
+        return np.zeros_like(mask)
+    # prefix sums of the cells: a block of m × m lies inside when it holds m * m of them
+    inside = np.zeros((h + 1, w + 1), dtype=np.int64)
+    inside[1:, 1:] = np.cumsum(np.cumsum(mask, axis=0), axis=1)
+    fits = (inside[m:, m:] - inside[:-m, m:] - inside[m:, :-m] + inside[:-m, :-m]) == m * m
+    # each fitting block stamped onto a difference array: its prefix sums count the blocks
+    # covering each cell
+    stamp = np.zeros((h + 1, w + 1), dtype=np.int64)
+    bh, bw = fits.shape
+    stamp[:bh, :bw] += fits
+    stamp[m:m + bh, :bw] -= fits
+    stamp[:bh, m:m + bw] -= fits
+    stamp[m:m + bh, m:m + bw] += fits
+    return np.cumsum(np.cumsum(stamp, axis=0), axis=1)[:h, :w] > 0
 
 
 def rooms_from_grid(

@@ -65,14 +65,14 @@ from shapely.geometry import Polygon
 from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import (
-    DOOR_WIDTH, USABLE_SIDE, grid_adjacencies, mask_defects, rooms_from_grid, shape_defects,
+    DOOR_WIDTH, USABLE_SIDE, grid_adjacencies, mask_defects, rooms_from_grid, shape_defects, square_cover,
 )
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
 from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
-__all__ = ["recut_narrow_rooms", "recut_unfit_rooms", "widen_passages"]
+__all__ = ["hand_off_strips", "recut_narrow_rooms", "recut_unfit_rooms", "widen_passages"]
 
 #: A rectangle is tried up to this many times its room's planned area (or minimum, the larger).
 MAX_GROWTH = 1.6
@@ -201,6 +201,108 @@ def recut_narrow_rooms(
     return layout
 
 
+def hand_off_strips(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    building_type: str | None = None,
+    min_contact: float = 1.0,
+    same_region: bool = False,
+) -> FloorLayout:
+    """``layout`` with the strips of each room below its clear width (``mansion eval realism``'s
+    "narrow") handed to the rooms beside them: the room keeps the cells its width's squares cover
+    (one piece, at its minimum area or what it had), and each strip the squares leave (an arm 1.5 m
+    wide along a guest room's ensuite, the end of an office past a meeting room) goes to one
+    neighbour, the smallest that can take it, a room before circulation (a corridor is planned, not
+what is left over): no core, one piece after, at most
+    :data:`MAX_GROWTH` times its planned area (or minimum), with no realism defect it lacked, no
+    part one cell wide or split of its 1 m squares it lacked, and every relation of either room
+    keeping its wall. A strip no neighbour takes stays (the one that holds the room's door); the
+    room must come out no longer narrow and with no defect it lacked, else nothing moves.
+    ``same_region``: only within one first-round region (floors that carry walls). Nothing of the
+    program changes, so nothing is recorded."""
+    nodes = {n.id: n for n in graph.nodes}
+    group = first_round_groups(graph) if same_region else None
+    cell = layout.grid.cell_size
+    ids = list(layout.grid.ids)
+    for room in sorted(r.id for r in layout.rooms):
+        if room not in nodes or nodes[room].is_core:
+            continue
+        found = _handed_off(layout, graph, room, nodes, group, building_type, min_contact, cell)
+        if found is not None:
+            layout = found
+    return layout
+
+
+def _handed_off(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    room: str,
+    nodes: dict[str, RoomNode],
+    group: dict[str, str] | None,
+    building_type: str | None,
+    min_contact: float,
+    cell: float,
+) -> FloorLayout | None:
+    """The layout with ``room``'s strips handed to its neighbours (:func:`hand_off_strips`), or
+    None when the room is not narrow or comes out narrow still."""
+    labels = layout.grid.array().astype(np.int32)
+    ids = list(layout.grid.ids)
+    k = ids.index(room)
+    rooms = {r.id: r for r in layout.rooms}
+    kind = rooms[room].room_type
+    mask = labels == k
+    before = mask_defects(mask, kind, building_type, cell)
+    if "narrow" not in before:
+        return None
+    keep = square_cover(mask, needed_width(kind, building_type) - 2 * EPS, cell)
+    if (
+        not keep.any() or not _connected(keep)
+        or keep.sum() * cell * cell + EPS < min(_least(nodes[room]), rooms[room].area)
+    ):
+        return None
+    new = labels
+    # the largest strip first: it decides most of the room's share below its width
+    for strip in sorted(_pieces(mask & ~keep), key=lambda p: (-len(p), p)):
+        rows, cols = zip(*strip)
+        beside = {
+            int(new[r, c]) for r0, c0 in strip for r, c in ((r0 + 1, c0), (r0 - 1, c0), (r0, c0 + 1), (r0, c0 - 1))
+            if 0 <= r < new.shape[0] and 0 <= c < new.shape[1] and new[r, c] >= 0 and new[r, c] != k
+        }
+        best: tuple[tuple[bool, int, str], np.ndarray] | None = None
+        for kx in sorted(beside):
+            other = ids[kx]
+            if other not in nodes or nodes[other].is_core or (
+                group is not None and group.get(other) != group.get(room)
+            ):
+                continue
+            trial = new.copy()
+            trial[rows, cols] = kx
+            was, now = new == kx, trial == kx
+            cap = max(rooms[other].target_area, _least(nodes[other])) * MAX_GROWTH
+            if now.sum() * cell * cell > cap + EPS or not _connected(now) or not _connected(trial == k):
+                continue
+            held = rooms[other].room_type
+            if not mask_defects(now, held, building_type, cell) <= mask_defects(was, held, building_type, cell):
+                continue
+            if any(a > b for a, b in zip(_passable(now), _passable(was))):
+                continue
+            if _walls(trial, ids, cell, _kept_walls(layout, graph, {room, other}), min_contact) is None:
+                continue
+            # a room before circulation (a corridor is planned, not what is left over), then the
+            # smallest
+            key = (room_design(held).circulation and not room_design(kind).circulation, int(now.sum()), other)
+            if best is None or key < best[0]:
+                best = (key, trial)
+        if best is not None:
+            new = best[1]
+    if new is labels:
+        return None
+    after = mask_defects(new == k, kind, building_type, cell)
+    if "narrow" in after or not after <= before:
+        return None
+    return _redrawn(layout, new)
+
+
 def widen_passages(
     layout: FloorLayout,
     graph: RoomGraph,
@@ -236,7 +338,13 @@ def _thin_parts(mask: np.ndarray) -> list[list[tuple[int, int]]]:
     """The 4-connected groups of the cells of ``mask`` that no 2 × 2 block of it covers, each as
     its (row, column) cells in order."""
     _, covered = _squares(mask)
-    left = {(int(r), int(c)) for r, c in zip(*np.nonzero(mask & ~covered))}
+    return _pieces(mask & ~covered)
+
+
+def _pieces(mask: np.ndarray) -> list[list[tuple[int, int]]]:
+    """The 4-connected pieces of the True cells of ``mask``, each as its (row, column) cells in
+    order, by their first cell."""
+    left = {(int(r), int(c)) for r, c in zip(*np.nonzero(mask))}
     parts: list[list[tuple[int, int]]] = []
     while left:
         start = min(left)

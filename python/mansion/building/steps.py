@@ -25,8 +25,10 @@ where an architect would, or dropped where the program can do without it
 (:mod:`mansion.building.merge`: a toilet lobby into its corridor, a small ward into the ward
 beside it, a flat's second bedroom into its living room), each recorded. Then rooms below their
 clear width are cut again as rectangles where a neighbour can give them floor
-(:func:`mansion.building.recut.recut_narrow_rooms`), and last, parts of rooms one cell wide are
-widened from a neighbour (:func:`mansion.building.recut.widen_passages`).
+(:func:`mansion.building.recut.recut_narrow_rooms`), the strips of those still below it are
+handed to the rooms beside them (:func:`mansion.building.recut.hand_off_strips`), and last,
+parts of rooms one cell wide are widened from a neighbour
+(:func:`mansion.building.recut.widen_passages`).
 """
 
 from __future__ import annotations
@@ -49,7 +51,7 @@ from mansion.building.load_bearing import (
     retarget_first_round,
 )
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
-from mansion.building.recut import recut_narrow_rooms, recut_unfit_rooms, widen_passages
+from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
@@ -469,6 +471,11 @@ def solve_building_floor(
         mended += merged
         # and rooms below their clear width cut again as rectangles where a neighbour can give
         layout = recut_narrow_rooms(
+            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+            same_region=program.load_bearing_walls,
+        )
+        # then the strips of rooms still below their width handed to the rooms beside them
+        layout = hand_off_strips(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
             same_region=program.load_bearing_walls,
         )
