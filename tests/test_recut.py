@@ -266,11 +266,9 @@ CCCCCCCCCCCCCCCCCCCCCC
     assert recut_unfit_rooms(layout, graph, unfit, "school", same_region=True) == (layout, [])
 
 
-def test_a_strip_below_the_rooms_width_is_handed_to_the_room_beside_it() -> None:
-    # O, an office with an arm 1.5 m deep along the top of the meeting room M (a quarter of it
-    # narrower than its 2.4 m): the arm goes to the meeting room, which comes out 4 m x 4.5 m, and
-    # the office keeps the 4 m x 4.5 m its width's squares cover, with its door to the corridor
-    picture = """
+# O, an office with an arm 1.5 m deep along the top of the meeting room M (a quarter of the office
+# narrower than its 2.4 m); the corridor C below or above
+ARM = """
 OOOOOOOOOOOOOOOO
 OOOOOOOOOOOOOOOO
 OOOOOOOOOOOOOOOO
@@ -280,15 +278,18 @@ MMMMMMMMOOOOOOOO
 MMMMMMMMOOOOOOOO
 MMMMMMMMOOOOOOOO
 MMMMMMMMOOOOOOOO
-CCCCCCCCCCCCCCCC
-CCCCCCCCCCCCCCCC
-CCCCCCCCCCCCCCCC
 """
-    names = {
-        "C": ("corridor", "main", "corridor", 4.0),
-        "O": ("office_1", "area", "office", 8.0),
-        "M": ("meeting_room_1", "area", "meeting_room", 10.0),
-    }
+ARM_NAMES = {
+    "C": ("corridor", "main", "corridor", 4.0),
+    "O": ("office_1", "area", "office", 8.0),
+    "M": ("meeting_room_1", "area", "meeting_room", 10.0),
+}
+
+
+def test_a_strip_below_the_rooms_width_is_handed_to_the_room_beside_it() -> None:
+    # the arm goes to the meeting room, which comes out 4 m x 4.5 m, and the office keeps the
+    # 4 m x 4.5 m its width's squares cover, with its door to the corridor
+    names, picture = ARM_NAMES, ARM + "CCCCCCCCCCCCCCCC\n" * 3
     layout = layout_of(picture, names)
     graph = graph_of(names, [("corridor", "office_1"), ("corridor", "meeting_room_1")])
     before = {r.id: r for r in layout.rooms}
@@ -313,24 +314,8 @@ def test_a_strip_no_neighbour_can_take_stays_and_nothing_moves() -> None:
     # the office reaches the corridor only through its arm: the meeting room cannot take the arm
     # (the office would lose its door), nor can the 2 m² corridor (it would grow past 1.6 times
     # its planned area into what is left over); so the office stays narrow and nothing moves
-    picture = """
-OOOOOOOOOOOOOOOO
-OOOOOOOOOOOOOOOO
-OOOOOOOOOOOOOOOO
-MMMMMMMMOOOOOOOO
-MMMMMMMMOOOOOOOO
-MMMMMMMMOOOOOOOO
-MMMMMMMMOOOOOOOO
-MMMMMMMMOOOOOOOO
-MMMMMMMMOOOOOOOO
-"""
-    names = {
-        "C": ("corridor", "main", "corridor", 4.0),
-        "O": ("office_1", "area", "office", 8.0),
-        "M": ("meeting_room_1", "area", "meeting_room", 10.0),
-    }
-    door = "CCCCCCCC........\nCCCCCCCC........\n"
-    layout = layout_of(door + picture.strip() + "\n", names)
+    names = ARM_NAMES
+    layout = layout_of("CCCCCCCC........\n" * 2 + ARM.lstrip(), names)
     graph = graph_of(names, [("corridor", "office_1"), ("office_1", "meeting_room_1")])
     assert hand_off_strips(layout, graph, "office") == layout
 

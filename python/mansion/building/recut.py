@@ -220,16 +220,27 @@ what is left over): no core, one piece after, at most
     room must come out no longer narrow and with no defect it lacked, else nothing moves.
     ``same_region``: only within one first-round region (floors that carry walls). Nothing of the
     program changes, so nothing is recorded."""
+    cell = layout.grid.cell_size
+    return _mend_rooms(
+        layout, graph, same_region,
+        lambda lay, room, nodes, group: _handed_off(lay, graph, room, nodes, group, building_type, min_contact, cell),
+    )
+
+
+def _mend_rooms(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    same_region: bool,
+    mend: Callable[[FloorLayout, str, dict[str, RoomNode], dict[str, str] | None], FloorLayout | None],
+) -> FloorLayout:
+    """``layout`` with ``mend`` (the layout, a room, the graph's nodes by id, each room's
+    first-round region where floors carry walls (``same_region``) else None → the mended layout,
+    or None) applied to each room of the graph but the cores, in the order of their ids."""
     nodes = {n.id: n for n in graph.nodes}
     group = first_round_groups(graph) if same_region else None
-    cell = layout.grid.cell_size
-    ids = list(layout.grid.ids)
     for room in sorted(r.id for r in layout.rooms):
-        if room not in nodes or nodes[room].is_core:
-            continue
-        found = _handed_off(layout, graph, room, nodes, group, building_type, min_contact, cell)
-        if found is not None:
-            layout = found
+        if room in nodes and not nodes[room].is_core:
+            layout = mend(layout, room, nodes, group) or layout
     return layout
 
 
@@ -320,18 +331,15 @@ def widen_passages(
     without a usable square it had. ``same_region``: only within one first-round region (floors
     that carry walls). Such strips come from rounds whose width rules were lowered to 1 m to lay
     them out at all; the agent cannot pass them."""
-    nodes = {n.id: n for n in graph.nodes}
-    group = first_round_groups(graph) if same_region else None
     cell = layout.grid.cell_size
     ids = list(layout.grid.ids)
-    for room in sorted(r.id for r in layout.rooms):
-        if room not in nodes or nodes[room].is_core:
-            continue
-        for strip in _thin_parts(layout.grid.array() == ids.index(room)):
-            found = _widened(layout, graph, room, strip, nodes, group, building_type, min_contact, cell)
-            if found is not None:
-                layout = found
-    return layout
+
+    def widen(lay: FloorLayout, room: str, nodes: dict[str, RoomNode], group: dict[str, str] | None) -> FloorLayout:
+        for strip in _thin_parts(lay.grid.array() == ids.index(room)):
+            lay = _widened(lay, graph, room, strip, nodes, group, building_type, min_contact, cell) or lay
+        return lay
+
+    return _mend_rooms(layout, graph, same_region, widen)
 
 
 def _thin_parts(mask: np.ndarray) -> list[list[tuple[int, int]]]:
