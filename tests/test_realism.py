@@ -32,6 +32,8 @@ from mansion.models.room_design import (
     ROOM_DESIGN,
     corridor_width,
     design_key,
+    needed_width,
+    planned_width,
     room_design,
 )
 from mansion.exceptions import PlannerError
@@ -163,6 +165,23 @@ def test_corridor_widths_by_building_type() -> None:
     assert corridor_width("hospital") >= 2.4
     assert corridor_width(None) == corridor_width("some new type")
     assert set(CORRIDOR_WIDTH) >= {bench_case(s)[0] for s in range(14)}
+
+
+def test_circulation_people_pass_through_needs_the_corridor_width_a_toilet_lobby_its_own() -> None:
+    # a hospital's corridors, lobbies and waiting areas take its 2.4 m; its toilet lobby, which
+    # serves only its WCs, and a balcony keep the table's width; rooms keep theirs
+    for kind in ("corridor", "ward_corridor", "lobby", "waiting_area", "entrance_hall"):
+        assert needed_width(kind, "hospital") == planned_width(kind, "hospital") == corridor_width("hospital")
+    assert needed_width("toilet_lobby", "hospital") == room_design("toilet_lobby").min_width == 1.2
+    assert needed_width("balcony", "hospital") == room_design("balcony").min_width
+    assert needed_width("ward", "hospital") == planned_width("ward", "hospital") == room_design("ward").min_width
+    # but the solver is asked for the corridor width of a toilet lobby: one planned only as wide
+    # as it needs leaves its WCs arms 1 m wide
+    assert planned_width("toilet_lobby", "hospital") == corridor_width("hospital")
+    # a 1.5 m toilet lobby is judged by its own width, a 1.5 m lobby by the corridor's
+    lobby = box(0, 0, 3, 1.5)
+    f = summarise([RoomRecord("hospital", "toilet_lobby", lobby), RoomRecord("hospital", "lobby", lobby)], buildings=1)
+    assert f.below_width == 1 and f.corridors.below_required == 1
 
 
 # -- planners ------------------------------------------------------------------------------------

@@ -43,9 +43,10 @@ rooms are mended (:func:`recut_narrow_rooms`): a rectangle of about its own area
 times :data:`NARROW_SPAN`) in the region it shares with the room it was cut from, a sibling or
 another room beside it, keeping as many of its cells as it can, under the same rules; it must come out of the cut no
 longer narrow. A room with the one room cut from it (a ward and its ensuite) is cut again with it
-as a suite (:func:`_best_suite`). Nothing of the program changes, so these recuts are not
-recorded. Last, a part of a room one cell wide is widened from a neighbour
-(:func:`widen_passages`).
+as a suite (:func:`_best_suite`). What is still below its width keeps the cells its width's
+squares cover and hands each strip they leave to a room beside it that can take it
+(:func:`hand_off_strips`). Nothing of the program changes, so these mends are not recorded.
+Last, a part of a room one cell wide is widened from a neighbour (:func:`widen_passages`).
 
 Of the rectangles that pass, the one closest to the room's planned area wins, then the one whose
 remainder is most compact (the most of its box filled), then the region it was cut from over a

@@ -11,14 +11,15 @@ The same measures, from each room's polygon in metres, for generated buildings a
 - **no square**: no square a hair over 1 m × 1 m fits anywhere in the room (it cannot be used);
 - **below area / below width**: the room is smaller than its type's minimum area, or more than
   10 % of it is narrower than its type's minimum clear width (:mod:`mansion.models.room_design`;
-  circulation's: its building type's corridor width, :func:`~mansion.models.room_design.needed_width`);
+  circulation people pass through: its building type's corridor width, a toilet lobby and a
+  balcony their own, :func:`~mansion.models.room_design.needed_width`);
 - **no corridor door**: a room the table wants on a corridor has no access to circulation (a
   circulation room, or a room that serves others: the floor's hub or a zone's sub-hub, as an
   apartment's living room serves its bedrooms as a hall does). Generated floors: an ``access`` edge of the room graph whose two rooms share at least
   0.9 m of wall (a door's width) in the layout. Real plans carry no interior doors, so there a
   shared wall with the living room, the entrance or a circulation room stands for the door;
 - **corridor widths**: the clear width of every circulation room (the width that 90 % of its area
-  has), against the building type's corridor width.
+  has), against the width it needs (the building type's corridor width, as above).
 
 Generated floors that are copies of another floor are counted once (they are the same rooms).
 Real plans are read at :data:`T2D_METRES_PER_PIXEL` (the issue's "about 0.09 m"): the median

@@ -15,8 +15,12 @@ Per room type, a :class:`RoomDesign` gives
 - ``daylight``: it needs a window (an exterior wall);
 - ``own_bathroom``: it comes with a bathroom of its own (hotel guest rooms, wards);
 - ``circulation``: it is circulation (corridors, halls, lobbies, balconies); such rooms are long
-  by nature and take the building type's corridor width (:data:`CORRIDOR_WIDTH`,
-  :func:`needed_width`).
+  by nature and, where people pass through them (``through``), take the building type's corridor
+  width (:data:`CORRIDOR_WIDTH`, :func:`needed_width`);
+- ``through``: circulation people pass through on their way elsewhere (a corridor, a hall, a
+  lobby), held to the corridor width; a toilet lobby serves only the WCs cut from it and a balcony
+  leads nowhere, so they keep their own table width (a toilet lobby 1.2 m, Approved Document M's
+  lobby to a WC; a balcony 1.0 m).
 
 Where the figures come from (the smaller of the usual values, so a compact but real room passes):
 
@@ -64,6 +68,7 @@ __all__ = [
     "corridor_width",
     "design_key",
     "needed_width",
+    "planned_width",
     "room_design",
 ]
 
@@ -85,6 +90,7 @@ class RoomDesign:
     daylight: bool = False
     own_bathroom: bool = False
     circulation: bool = False
+    through: bool = False
 
 
 def _room(area: float, width: float, aspect: float = 2.5, *, corridor: bool = False,
@@ -92,8 +98,8 @@ def _room(area: float, width: float, aspect: float = 2.5, *, corridor: bool = Fa
     return RoomDesign(area, width, aspect, corridor, daylight, bathroom)
 
 
-def _circ(area: float, width: float) -> RoomDesign:
-    return RoomDesign(area, width, 12.0, circulation=True)
+def _circ(area: float, width: float, *, through: bool = True) -> RoomDesign:
+    return RoomDesign(area, width, 12.0, circulation=True, through=through)
 
 
 #: The design table, by canonical room type (the offline planner's vocabulary, the LLM prompts'
@@ -111,10 +117,10 @@ ROOM_DESIGN: dict[str, RoomDesign] = {
     "atrium": _circ(30.0, 3.0),
     "concourse": _circ(30.0, 3.0),
     "entrance_vestibule": _circ(4.0, 1.5),
-    "toilet_lobby": _circ(2.5, 1.2),
+    "toilet_lobby": _circ(2.5, 1.2, through=False),
     "waiting_area": _circ(10.0, 2.4),
     "back_of_house": _circ(5.0, 1.2),
-    "balcony": _circ(2.0, 1.0),
+    "balcony": _circ(2.0, 1.0, through=False),
     # dwelling (NDSS, Neufert)
     "living_room": _room(13.0, 3.0, 2.5, daylight=True),
     "studio_room": _room(13.0, 3.0, 2.5, daylight=True),
@@ -335,16 +341,28 @@ def corridor_width(building_type: str | None) -> float:
 
 
 def needed_width(room_type: str, building_type: str | None) -> float:
-    """The clear width a room of ``room_type`` keeps everywhere, in metres: circulation's its
-    building type's corridor width, any other room's the table's. What the planners give the
-    solver (``RoomNode.clear_width``), what the mends hold rooms to and what ``mansion eval
-    realism`` judges.
+    """The clear width a room of ``room_type`` keeps everywhere, in metres: circulation people
+    pass through (``through``), its building type's corridor width; any other room's, and a toilet
+    lobby's or a balcony's, the table's. What the mends hold rooms to and what ``mansion eval
+    realism`` judges; the planners ask the solver for :func:`planned_width`.
 
     Measured and left: judging only corridors (:data:`CORRIDOR_TYPES`) at the corridor width and
-    other circulation (a toilet lobby, a lobby) at its own table width, and planning them so,
-    leaves 308 rooms of the offline hundred below their width against 345 judged that way now;
-    but toilet lobbies 1.5 m deep leave their WCs arms 1 m wide: 9 more slivers and one more room
-    without a usable square (8 and 3 more on the second hundred)."""
+    other circulation (a lobby, an atrium) at its own table width, and planning them so, left
+    308 rooms of the offline hundred below their width against 345 judged at the corridor width;
+    but it judges lobbies and atriums people cross by less than the corridors that lead to them."""
+    design = room_design(room_type)
+    if design.circulation and design.through:
+        return corridor_width(building_type)
+    return design.min_width
+
+
+def planned_width(room_type: str, building_type: str | None) -> float:
+    """The clear width the solver's repair brings a finished room of ``room_type`` up to
+    (``RoomNode.clear_width``): :func:`needed_width`, but every circulation room's its building
+    type's corridor width. A toilet lobby planned only as wide as it needs (1.2 m, 1.5 m on the
+    grid) leaves its WCs arms 1 m wide: on the offline hundreds, 1 and 2 more slivers and one more
+    room without a usable square on the second (toilet lobbies judged at their own width either
+    way: 281 / 298 rooms below their width planned so, 280 / 299 planned at the corridor width)."""
     if room_design(room_type).circulation:
         return corridor_width(building_type)
-    return room_design(room_type).min_width
+    return needed_width(room_type, building_type)

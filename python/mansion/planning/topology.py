@@ -22,7 +22,7 @@ from mansion.models.room_design import (
     ELONGATED_ASPECT,
     corridor_width,
     design_key,
-    needed_width,
+    planned_width,
     room_design,
 )
 from mansion.planning.vocabulary import room_kind
@@ -73,11 +73,12 @@ def min_width(room_type: str, area: float, building_type: str | None) -> float:
 def design_minimums(room_type: str, building_type: str | None) -> dict[str, float | None]:
     """What the solver's repair brings a finished room of ``room_type`` up to
     (:attr:`RoomNode.min_area`, ``clear_width``, ``max_aspect``): the table's minimum area, its
-    clear width (circulation's: its building type's corridor width), and for rooms that are not circulation the
-    box proportions beyond which a room counts as elongated. The same figures as
-    ``mansion eval realism`` measures."""
+    clear width (:func:`~mansion.models.room_design.planned_width`: circulation's its building
+    type's corridor width), and for rooms that are not circulation the box proportions beyond
+    which a room counts as elongated. The figures ``mansion eval realism`` measures, but a toilet
+    lobby planned as wide as a corridor though judged at its own width."""
     d = room_design(room_type)
-    width = needed_width(room_type, building_type)
+    width = planned_width(room_type, building_type)
     return {
         "min_area": d.min_area,
         "clear_width": width,
