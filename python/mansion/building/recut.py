@@ -257,11 +257,15 @@ def _handed_off(
 ) -> FloorLayout | None:
     """The layout with ``room``'s strips handed to its neighbours (:func:`hand_off_strips`), or
     None when the room is not narrow or comes out narrow still."""
+    rooms = {r.id: r for r in layout.rooms}
+    kind = rooms[room].room_type
+    xs, ys = zip(*rooms[room].polygon)
+    w, h = max(xs) - min(xs), max(ys) - min(ys)
+    if not rooms[room].holes and abs(w * h - rooms[room].area) < EPS and min(w, h) + EPS >= needed_width(kind, building_type):
+        return None  # a rectangle at least its width each way (most rooms): nothing to hand off
     labels = layout.grid.array().astype(np.int32)
     ids = list(layout.grid.ids)
     k = ids.index(room)
-    rooms = {r.id: r for r in layout.rooms}
-    kind = rooms[room].room_type
     mask = labels == k
     before = mask_defects(mask, kind, building_type, cell)
     if "narrow" not in before:
@@ -474,15 +478,18 @@ def _best_over_donors(
     ``inner``: the one room cut from ``room``, recut with it as a suite (:func:`_best_suite`)."""
     rooms = {r.id for r in layout.rooms}
     best: tuple[tuple[float, float], str, FloorLayout] | None = None
-    for donor in _donors(layout, room, up, parent, nodes):
-        if donor not in rooms or (group is not None and group.get(donor) != group.get(room)):
-            continue
-        found = (
-            _best_recut(layout, graph, room, donor, building_type, min_contact, narrow=narrow)
-            if inner is None else _best_suite(layout, graph, room, inner, donor, building_type, min_contact)
-        )
-        if found is not None and (best is None or found[0] < best[0]):
-            best = (found[0], donor, found[1])
+    for tier in _donors(layout, room, up, parent, nodes):
+        for donor in tier:
+            if donor not in rooms or (group is not None and group.get(donor) != group.get(room)):
+                continue
+            found = (
+                _best_recut(layout, graph, room, donor, building_type, min_contact, narrow=narrow)
+                if inner is None else _best_suite(layout, graph, room, inner, donor, building_type, min_contact)
+            )
+            if found is not None and (best is None or found[0] < best[0]):
+                best = (found[0], donor, found[1])
+        if best is not None:
+            break  # the other rooms beside give only where the room's own region cannot
     return None if best is None else (best[1], best[2])
 
 
@@ -499,19 +506,21 @@ def _kept_walls(layout: FloorLayout, graph: RoomGraph, among: set[str]) -> list[
 
 def _donors(
     layout: FloorLayout, room: str, up: str, parent: dict[str, str], nodes: dict[str, RoomNode]
-) -> list[str]:
+) -> tuple[list[str], list[str]]:
     """The rooms ``room`` may take floor from: the region it was cut from, then each sibling
     beside it (cut from the same region), then any other room beside it (a canteen beside the
     head office of an admin suite) but one cut from ``room`` itself, each sharing a door's width
-    of wall and no core. Cousins give last: the wall between two branches of the cut tree moves
-    only where their own regions cannot mend the room (seeds 0-99: 352 -> 338 rooms below their
-    width, the one room without a usable square mended; seeds 100-199: 384 -> 371)."""
+    of wall and no core; as two tiers, the region and the siblings first. The other rooms give
+    only where the first tier finds no recut at all: the wall between two branches of the cut
+    tree moves only where their own regions cannot mend the room (seeds 0-99: 352 -> 338 rooms
+    below their width, the one room without a usable square mended; seeds 100-199: 384 -> 371;
+    about 1 in 10 of the second tier's searches finds a recut)."""
     beside = sorted(
         other for a in layout.adjacencies if room in (a.a, a.b) and a.longest + EPS >= DOOR_WIDTH
         for other in [a.b if a.a == room else a.a]
         if other in nodes and not nodes[other].is_core and other != up and parent.get(other) != room
     )
-    return [up] + [o for o in beside if parent.get(o) == up] + [o for o in beside if parent.get(o) != up]
+    return [up] + [o for o in beside if parent.get(o) == up], [o for o in beside if parent.get(o) != up]
 
 
 def _best_recut(
