@@ -41,18 +41,20 @@ A room below its clear width (``mansion eval realism``'s "narrow": an arm 1 m wi
 neighbour, a classroom notched by the corridor) is cut again the same way once the floor's unfit
 rooms are mended (:func:`recut_narrow_rooms`): a rectangle of about its own area (its area
 times :data:`NARROW_SPAN`) in the region it shares with the room it was cut from, a sibling or
-another room beside it, keeping as many of its cells as it can, under the same rules; it must come out of the cut no
-longer narrow. A room with the one room cut from it (a ward and its ensuite) is cut again with it
-as a suite (:func:`_best_suite`). What is still below its width keeps the cells its width's
-squares cover and hands each strip they leave to a room beside it that can take it
-(:func:`hand_off_strips`). Nothing of the program changes, so these mends are not recorded.
-Last, a part of a room one cell wide is widened from a neighbour (:func:`widen_passages`).
+another room beside it, keeping as many of its cells as it can, under the same rules; it must
+come out of the cut no longer narrow. A room with the one room cut from it (a ward and its
+ensuite) is cut again with it as a suite (:func:`_best_suite`). What is still below its width
+keeps the cells its width's squares cover and hands each strip they leave to a room beside it
+that can take it (:func:`hand_off_strips`). Nothing of the program changes, so these mends are
+not recorded. Last, a part of a room one cell wide is widened from a neighbour
+(:func:`widen_passages`).
 
 Of the rectangles that pass, the one closest to the room's planned area wins, then the one whose
 remainder is most compact (the most of its box filled), then the region it was cut from over a
-sibling, a sibling over another room, then the lowest, leftmost one. Each recut is recorded in the floor's ``relaxations``
-("bathroom_2 cut again from bay_3 at 5.2 m² (bathroom_2 laid out at 2.2 m², below its 3.5 m²
-minimum; it was 2.2 m²)").
+sibling, then the lowest, leftmost one; another room beside it gives only where neither the
+region nor a sibling can. Each recut is recorded in the floor's ``relaxations`` ("bathroom_2
+cut again from bay_3 at 5.2 m² (bathroom_2 laid out at 2.2 m², below its 3.5 m² minimum; it
+was 2.2 m²)").
 """
 
 from __future__ import annotations
@@ -108,9 +110,9 @@ def recut_unfit_rooms(
     same_region: bool = False,
 ) -> tuple[FloorLayout, list[str]]:
     """Cut each room ``unfit`` names (id → why) again inside the region it shares with the room
-    it was cut from (or with a sibling or another room beside it), where the module's rules allow; the smallest
-    unfit room first. ``same_region``: only within one first-round region (floors that carry
-    walls). Returns the layout and a relaxation note per recut."""
+    it was cut from (or with a sibling or another room beside it), where the module's rules
+    allow; the smallest unfit room first. ``same_region``: only within one first-round region
+    (floors that carry walls). Returns the layout and a relaxation note per recut."""
     notes: list[str] = []
     tried: set[str] = set()
     parent = cut_parents(graph)
@@ -157,8 +159,8 @@ def recut_narrow_rooms(
     """``layout`` with each room below its clear width (``mansion eval realism``'s "narrow": an L
     whose arm is narrower than a ward, a classroom notched by a corridor) cut again as a
     rectangle of about its area in the region it shares with the room it was cut from, a sibling
-    or another room beside it, under the rules of a recut; a room with the one room cut from it (a ward
-    and its ensuite) together with it as a suite; rooms with several rooms cut from them,
+    or another room beside it, under the rules of a recut; a room with the one room cut from it
+    (a ward and its ensuite) together with it as a suite; rooms with several rooms cut from them,
     circulation and cores are left. The rectangle that keeps most of the room's cells wins.
     Nothing of the program changes, so nothing is recorded."""
     parent = cut_parents(graph)
@@ -211,14 +213,14 @@ def hand_off_strips(
 ) -> FloorLayout:
     """``layout`` with the strips of each room below its clear width (``mansion eval realism``'s
     "narrow") handed to the rooms beside them: the room keeps the cells its width's squares cover
-    (one piece, at its minimum area or what it had), and each strip the squares leave (an arm 1.5 m
-    wide along a guest room's ensuite, the end of an office past a meeting room) goes to one
-    neighbour, the smallest that can take it, a room before circulation (a corridor is planned, not
-what is left over): no core, one piece after, at most
-    :data:`MAX_GROWTH` times its planned area (or minimum), with no realism defect it lacked, no
-    part one cell wide or split of its 1 m squares it lacked, and every relation of either room
-    keeping its wall. A strip no neighbour takes stays (the one that holds the room's door); the
-    room must come out no longer narrow and with no defect it lacked, else nothing moves.
+    (one piece, at its minimum area or what it had), and each strip the squares leave (an arm
+    1.5 m wide along a guest room's ensuite, the end of an office past a meeting room) goes to one
+    neighbour, the smallest that can take it, a room before circulation (a corridor is planned,
+    not what is left over): no core, one piece after, at most :data:`MAX_GROWTH` times its
+    planned area (or minimum), with no realism defect it lacked, no part one cell wide or split of
+    its 1 m squares it lacked, and every relation of either room keeping its wall. A strip no
+    neighbour takes stays (the one that holds the room's door); the room must come out no longer
+    narrow and with no defect it lacked, else nothing moves.
     ``same_region``: only within one first-round region (floors that carry walls). Nothing of the
     program changes, so nothing is recorded."""
     cell = layout.grid.cell_size
@@ -261,7 +263,8 @@ def _handed_off(
     kind = rooms[room].room_type
     xs, ys = zip(*rooms[room].polygon)
     w, h = max(xs) - min(xs), max(ys) - min(ys)
-    if not rooms[room].holes and abs(w * h - rooms[room].area) < EPS and min(w, h) + EPS >= needed_width(kind, building_type):
+    need = needed_width(kind, building_type)
+    if not rooms[room].holes and abs(w * h - rooms[room].area) < EPS and min(w, h) + EPS >= need:
         return None  # a rectangle at least its width each way (most rooms): nothing to hand off
     labels = layout.grid.array().astype(np.int32)
     ids = list(layout.grid.ids)
@@ -270,7 +273,7 @@ def _handed_off(
     before = mask_defects(mask, kind, building_type, cell)
     if "narrow" not in before:
         return None
-    keep = square_cover(mask, needed_width(kind, building_type) - 2 * EPS, cell)
+    keep = square_cover(mask, need - 2 * EPS, cell)
     if (
         not keep.any() or not _connected(keep)
         or keep.sum() * cell * cell + EPS < min(_least(nodes[room]), rooms[room].area)
@@ -473,8 +476,9 @@ def _best_over_donors(
     inner: str | None = None,
 ) -> tuple[str, FloorLayout] | None:
     """(the room that gives, the layout) of the best recut of ``room`` over :func:`_donors`, the
-    region it was cut from winning ties (then the siblings, then the other rooms, in order); ``group``: each room's
-    first-round region where floors carry walls (no floor crosses between two), else None.
+    region it was cut from winning ties (then the siblings in order), the other rooms beside it
+    only where neither gives; ``group``: each room's first-round region where floors carry walls
+    (no floor crosses between two), else None.
     ``inner``: the one room cut from ``room``, recut with it as a suite (:func:`_best_suite`)."""
     rooms = {r.id for r in layout.rooms}
     best: tuple[tuple[float, float], str, FloorLayout] | None = None
