@@ -170,12 +170,9 @@ def recut_narrow_rooms(
 
     def narrow(rooms: dict[str, LayoutRoom], rid: str) -> bool:
         r = rooms[rid]
-        shape = Polygon(r.polygon, r.holes)
-        x0, y0, x1, y1 = shape.bounds
-        # a rectangle at least its width each way is not narrow (most rooms: no opening to draw)
-        if abs(shape.area - (x1 - x0) * (y1 - y0)) < EPS and min(x1 - x0, y1 - y0) + EPS >= needed_width(r.room_type, building_type):
+        if _wide_rectangle(r, building_type):
             return False
-        return "narrow" in shape_defects(shape, r.room_type, building_type)
+        return "narrow" in shape_defects(Polygon(r.polygon, r.holes), r.room_type, building_type)
 
     children: dict[str, list[str]] = {}
     for child, head in sorted(parent.items()):
@@ -230,6 +227,17 @@ def hand_off_strips(
     )
 
 
+def _wide_rectangle(room: LayoutRoom, building_type: str | None) -> bool:
+    """Whether ``room`` is a rectangle at least its clear width each way, so not narrow: most
+    rooms, told without drawing an opening or reading the grid."""
+    xs, ys = zip(*room.polygon)
+    w, h = max(xs) - min(xs), max(ys) - min(ys)
+    return (
+        not room.holes and abs(w * h - room.area) < EPS
+        and min(w, h) + EPS >= needed_width(room.room_type, building_type)
+    )
+
+
 def _mend_rooms(
     layout: FloorLayout,
     graph: RoomGraph,
@@ -260,12 +268,10 @@ def _handed_off(
     """The layout with ``room``'s strips handed to its neighbours (:func:`hand_off_strips`), or
     None when the room is not narrow or comes out narrow still."""
     rooms = {r.id: r for r in layout.rooms}
+    if _wide_rectangle(rooms[room], building_type):
+        return None
     kind = rooms[room].room_type
-    xs, ys = zip(*rooms[room].polygon)
-    w, h = max(xs) - min(xs), max(ys) - min(ys)
     need = needed_width(kind, building_type)
-    if not rooms[room].holes and abs(w * h - rooms[room].area) < EPS and min(w, h) + EPS >= need:
-        return None  # a rectangle at least its width each way (most rooms): nothing to hand off
     labels = layout.grid.array().astype(np.int32)
     ids = list(layout.grid.ids)
     k = ids.index(room)
@@ -554,7 +560,7 @@ def _best_recut(
     design = room_design(node.room_type)
     least = _least(node)
     target = max(rooms[room].target_area, least)
-    # at least its clear width each way (circulation: its building's corridors, as realism judges)
+    # at least its clear width each way (room_design.needed_width, as realism judges)
     width = needed_width(node.room_type, building_type)
     side = max(3, int(np.ceil(width / cell - 1e-6)))
     lo, hi = int(np.ceil(least / (cell * cell) - 1e-6)), int(target * MAX_GROWTH / (cell * cell))

@@ -54,8 +54,9 @@ __all__ = ["APRON", "CLEAR", "FurnishJob", "furnish_houses"]
 #: passages. The placement engine alone (the paper's room benchmarks) keeps 0.25 m.
 FURNISH_RADIUS = 0.3
 #: Depth kept free beyond a door on the side its leaf does not sweep, and along an opening (m):
-#: the passage the agent the scenes are furnished for needs, 0.7 m. At 0.6 m (an agent of 0.25 m) a ward's bed 0.63 m from
-#: the wall left no room to step through its ensuite's door (the navigation bench, hospital 48).
+#: the passage the agent the scenes are furnished for needs, 0.7 m. At 0.6 m (an agent of
+#: 0.25 m) a ward's bed 0.63 m from the wall left no room to step through its ensuite's door
+#: (the navigation bench, hospital 48).
 APRON = 2 * (FURNISH_RADIUS + MARGIN)
 #: Side of the square kept free around the spawn and each core landing (m).
 CLEAR = 0.6
