@@ -459,6 +459,55 @@ def test_generate_honours_a_compass_word() -> None:
     assert plain.floors[0].position_words == []
 
 
+class _Grid:
+    """A solved floor as :func:`layout_disagreement` reads it: labels (y up), ids, cell, origin."""
+
+    def __init__(self, labels: np.ndarray, ids: list[str]) -> None:
+        self.labels, self.ids, self.cell_size, self.origin = labels, ids, 1.0, (0.0, 0.0)
+
+    def array(self) -> np.ndarray:
+        return self.labels
+
+
+def test_a_layout_whose_rooms_touch_only_their_adjacent_rooms_and_fill_their_boxes_agrees_more() -> None:
+    from mansion.planning.spatial_seeds import disagreement_parts, layout_disagreement
+
+    free = FreeGrid(np.ones((4, 6), dtype=bool))
+    rooms = [SeedRoom("a", "kitchen", 8.0), SeedRoom("b", "bathroom", 8.0), SeedRoom("c", "bedroom", 8.0)]
+    reading = Reading(statements={}, unread=[], unresolved=[], resolved={})
+    adjacency = [("a", "b"), ("b", "c")]
+    # three bands, west to east: a touches b, b touches c, a and c do not touch
+    bands = np.repeat(np.array([[0, 0, 1, 1, 2, 2]]), 4, axis=0)
+    # a and b swapped: b at the west, then a, then c, so a touches c, which the adjacency does not pair
+    swapped = np.repeat(np.array([[1, 1, 0, 0, 2, 2]]), 4, axis=0)
+    ids = ["a", "b", "c"]
+    right = disagreement_parts(reading, rooms, free, adjacency, _Grid(bands, ids))
+    wrong = disagreement_parts(reading, rooms, free, adjacency, _Grid(swapped, ids))
+    assert right["contact"] == 0.0 and wrong["contact"] == 1.0
+    assert right["shape"] == 0.0
+    # a and b interlocked as two L shapes: each leaves a third of its bounding box empty
+    ell = bands.copy()
+    ell[:2, 2] = 0
+    ell[2:, 1] = 1
+    parts = disagreement_parts(reading, rooms, free, adjacency, _Grid(ell, ids))
+    assert parts["contact"] == 0.0 and parts["shape"] == pytest.approx(2 / 3)
+    assert layout_disagreement(reading, rooms, free, adjacency, _Grid(bands, ids)) < min(
+        layout_disagreement(reading, rooms, free, adjacency, _Grid(g, ids)) for g in (swapped, ell)
+    )
+
+
+def test_text_seeds_are_solved_without_holding_rooms_to_them(text_plans: Path) -> None:
+    from mansion.eval.text_placement import TEXT_ENERGY
+    from mansion.floorplan import EnergyWeights
+
+    report = evaluate_floorplans(text_plans, seeds="text", workers=1, limit=1)
+    assert report.weights == TEXT_ENERGY and TEXT_ENERGY.drift == 0.0
+    # weights given are used as given; the ground-truth setting keeps the package's energy
+    given_w = EnergyWeights()
+    assert evaluate_floorplans(text_plans, seeds="text", workers=1, limit=1, weights=given_w).weights == given_w
+    assert evaluate_floorplans(text_plans, workers=1, limit=1).weights == EnergyWeights()
+
+
 def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
     from mansion.eval.text_placement import _agreement
 

@@ -208,13 +208,21 @@ def evaluate_floorplans(
     ``seeds="anthropic"`` has Claude place the seeds from ``DIR/text/<id>.txt`` first (one request
     per plan, through ``client``, default an :class:`LLMClient` from the environment); a plan whose
     seeds cannot be planned counts as a failure. ``seeds="text"`` reads the same files offline
-    (:func:`mansion.eval.text_placement.solve_from_text`, in the workers).
+    (:func:`mansion.eval.text_placement.solve_from_text`, in the workers) and, unless ``weights``
+    are given, solves under :data:`mansion.eval.text_placement.TEXT_ENERGY`.
     """
     if mode not in ("hierarchical", "flat"):
         raise InvalidInputError(f"mode must be 'hierarchical' or 'flat', got {mode!r}")
     if limit is not None and limit < 1:
         raise InvalidInputError(f"limit must be >= 1, got {limit}")
-    w = weights if weights is not None else EnergyWeights()
+    if weights is not None:
+        w = weights
+    elif seeds == "text":
+        from mansion.eval.text_placement import TEXT_ENERGY
+
+        w = TEXT_ENERGY
+    else:
+        w = EnergyWeights()
     s = settings if settings is not None else SolverSettings()
     chosen = list(ids) if ids is not None else plan_ids(data)
     if limit is not None:
