@@ -508,6 +508,43 @@ def test_text_seeds_are_solved_without_holding_rooms_to_them(text_plans: Path) -
     assert evaluate_floorplans(text_plans, workers=1, limit=1).weights == EnergyWeights()
 
 
+def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: pytest.MonkeyPatch) -> None:
+    from mansion.eval import text_placement
+    from mansion.eval.t2d import T2DPlan, node_id
+    from mansion.eval.text_placement import REFINE, _room_seeds, solve_from_text
+
+    # an L-shaped room with thin arms is seeded on one of its own cells, not at its centroid,
+    # which lies in the other room (the notch); a rectangle at the cell nearest its centre
+    labels = np.ones((6, 6), dtype=int)
+    labels[:, 0] = labels[5, :] = 0
+    rr, cc = np.nonzero(labels == 0)
+    assert labels[int(rr.mean()), int(cc.mean())] == 1
+    seeds = _room_seeds(_Grid(labels, ["l", "r"]))
+    assert seeds is not None and labels[int(seeds["l"][1]), int(seeds["l"][0])] == 0
+    assert seeds["r"] == (3.5, 2.5)
+    assert _room_seeds(_Grid(labels, ["l", "r", "gone"])) is None
+
+    plan = T2DPlan.model_validate(make_plan(2))
+    solved: list[dict] = []
+
+    class _Layout:
+        def __init__(self, n: int) -> None:
+            # each solve a different floor of bands, so each one's rooms give new seeds
+            self.grid = _Grid(np.repeat(np.arange(len(plan.rooms)).repeat(n % 3 + 1)[None, :], 2, axis=0), [node_id(r) for r in plan.rooms])
+
+    def solve(s):
+        solved.append(s)
+        return np.zeros((64, 64), dtype=int), _Layout(len(solved))
+
+    monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: float(len(solved)))
+    chosen, _, _ = solve_from_text(plan, "The kitchen is in the north.", solve)
+    # the last solves start from the rooms of the three layouts that disagreed least (the first three)
+    first = len(solved) - REFINE
+    assert first > REFINE and solved[first:] == [_room_seeds(_Layout(n).grid) for n in (1, 2, 3)]
+    # the seeds kept are ones the solve was given
+    assert chosen in solved
+
+
 def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
     from mansion.eval.text_placement import _agreement
 
