@@ -575,13 +575,14 @@ def test_when_no_seed_set_can_be_laid_out_other_solver_seeds_are_tried(monkeypat
         return np.zeros((64, 64), dtype=int), _Layout()
 
     class _Layout:
-        grid = None
+        grid = _Grid(np.zeros((2, 2), dtype=int), ["room"])
 
-    # the stand-in layouts have no grid to compare with the text
+    # the stand-in layouts are not compared with the text
     monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
     seeds, pred, _ = solve_from_text(plan, "The kitchen is in the north.", fails, lambda: pytest.fail("no fallback"), reseed)
     assert seeds is not None and pred.shape == (64, 64)
-    # round 1 fails for every seed set, round 2 keeps them all; no third round
+    # round 1 fails for every seed set, round 2 keeps them all, and the best are laid out again
+    # under round 2's random seed; no third round
     assert set(calls) == {1, 2}
     # without a reseed the fallback is used at once
     seeds, pred, _ = solve_from_text(plan, "The kitchen is in the north.", fails, lambda: ("heuristic", None))
