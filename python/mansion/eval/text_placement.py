@@ -156,15 +156,15 @@ def solve_from_text(
     # the layouts ranked best are laid out again from their own rooms (the solve under the same
     # random seed that laid them out)
     for j in _ranking(solved)[:REFINE]:
-        seeds = _room_seeds(solved[j][3].grid)
-        if seeds is None or seeds in tried:
+        again = _room_seeds(solved[j][3].grid)
+        if again is None or again in tried:
             continue
-        tried.append(seeds)
+        tried.append(again)
         try:
-            pred, layout = solve(seeds) if k == 0 else reseed(seeds, k)  # type: ignore[misc]
+            pred, layout = solve(again) if k == 0 else reseed(again, k)  # type: ignore[misc]
         except MansionError:
             continue
-        solved.append((layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid), seeds, pred, layout))
+        solved.append((layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid), again, pred, layout))
     best = _ranking(solved)[0]
     return solved[best][1], solved[best][2], solved[best][3]
 
