@@ -154,8 +154,9 @@ def solve_from_text(
         pred, layout = fallback()
         return None, pred, layout
     # the layouts ranked best are laid out again from their own rooms (the solve under the same
-    # random seed that laid them out)
-    for j in _ranking(solved)[:REFINE]:
+    # random seed that laid them out); the layouts' agreements are kept for the second ranking
+    agreements: dict[tuple[int, int], float] = {}
+    for j in _ranking(solved, agreements)[:REFINE]:
         again = _room_seeds(solved[j][3].grid)
         if again is None or again in tried:
             continue
@@ -165,15 +166,16 @@ def solve_from_text(
         except MansionError:
             continue
         solved.append((layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid), again, pred, layout))
-    best = _ranking(solved)[0]
+    best = _ranking(solved, agreements)[0]
     return solved[best][1], solved[best][2], solved[best][3]
 
 
-def _ranking(solved: list[tuple[float, Any, Any, Any]]) -> list[int]:
+def _ranking(solved: list[tuple[float, Any, Any, Any]], agreements: dict[tuple[int, int], float]) -> list[int]:
     """Indices of ``solved`` (score, seeds, prediction, layout), best first: the least
-    disagreement with the text, less :data:`CONSENSUS` times the agreement with the others."""
+    disagreement with the text, less :data:`CONSENSUS` times the agreement with the others.
+    ``agreements`` keeps each pair's agreement for the next ranking of the same, longer list."""
     preds = [s[2] for s in solved]
-    key = [solved[k][0] - CONSENSUS * _agreement(k, preds) for k in range(len(solved))]
+    key = [solved[k][0] - CONSENSUS * _agreement(k, preds, agreements) for k in range(len(solved))]
     return sorted(range(len(solved)), key=lambda k: (key[k], k))
 
 
@@ -213,10 +215,20 @@ REFINE = 3
 CONSENSUS = 5.0
 
 
-def _agreement(k: int, preds: list[Any]) -> float:
+def _agreement(k: int, preds: list[Any], memo: dict[tuple[int, int], float] | None = None) -> float:
     """Mean micro-IoU of layout ``k``'s class map with every other candidate's (0 when alone).
-    Compares candidate layouts with each other only; no ground truth is involved."""
+    Compares candidate layouts with each other only; no ground truth is involved. The IoU of two
+    maps is the same either way round, so ``memo`` (pair of indices, lower first → IoU) lets each
+    pair be compared once."""
     from mansion.eval.iou import plan_iou
 
-    others = [plan_iou(preds[k], q).micro for j, q in enumerate(preds) if j != k]
+    memo = {} if memo is None else memo
+    others = []
+    for j, q in enumerate(preds):
+        if j == k:
+            continue
+        pair = (min(j, k), max(j, k))
+        if pair not in memo:
+            memo[pair] = plan_iou(preds[k], q).micro
+        others.append(memo[pair])
     return sum(others) / len(others) if others else 0.0

@@ -563,19 +563,15 @@ def disagreement_parts(
                         continue
                     ox, oy = boxes[other][:2]
                     parts["relation"] += max(0.0, -((cx - ox) * d[0] + (cy - oy) * d[1])) / scale
+    # the pairs of rooms that share a wall (cells side by side), read once for the two parts below
+    touching: set[frozenset[str]] = set()
+    for A, B in ((labels[:, :-1], labels[:, 1:]), (labels[:-1], labels[1:])):
+        m = (A != B) & (A >= 0) & (B >= 0)
+        touching |= {frozenset((ids[a], ids[b])) for a, b in set(zip(A[m].tolist(), B[m].tolist()))}
     # adjacency: rooms that should share a wall and do not
     for a, b in adjacency:
         if a in ids and b in ids:
-            ka, kb = ids.index(a), ids.index(b)
-            A = labels == ka
-            B = labels == kb
-            touch = (A[:, :-1] & B[:, 1:]).any() or (B[:, :-1] & A[:, 1:]).any() or (A[:-1] & B[1:]).any() or (B[:-1] & A[1:]).any()
-            parts["adjacency"] += 0.0 if touch else 1.0
+            parts["adjacency"] += 0.0 if frozenset((a, b)) in touching else 1.0
     # contacts: pairs of rooms sharing a wall that the adjacency does not pair
-    paired = {frozenset(e) for e in adjacency}
-    touching: set[tuple[int, int]] = set()
-    for A, B in ((labels[:, :-1], labels[:, 1:]), (labels[:-1], labels[1:])):
-        m = (A != B) & (A >= 0) & (B >= 0)
-        touching |= set(zip(np.minimum(A[m], B[m]).tolist(), np.maximum(A[m], B[m]).tolist()))
-    parts["contact"] = float(sum(1 for a, b in touching if frozenset((ids[a], ids[b])) not in paired))
+    parts["contact"] = float(len(touching - {frozenset(e) for e in adjacency}))
     return parts
