@@ -15,6 +15,7 @@ from mansion.building import check_building, generate_building
 from mansion.building.load_bearing import first_round_walls
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError, PlannerError
 from mansion.models.building import Building, FloorCopy
+from mansion.models.layout import LayoutRoom
 from mansion.planning import parse_description
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benches" / "python"))
@@ -281,18 +282,20 @@ def _ward_graph():  # type: ignore[no-untyped-def]
     return RoomGraph.model_validate({"nodes": nodes, "edges": edges})
 
 
+def _box_room(i: str, x0: float, y0: float, x1: float, y1: float, kind: str = "area") -> LayoutRoom:
+    """A rectangular laid-out room whose type is its id's first word."""
+    poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    area = (x1 - x0) * (y1 - y0)
+    return LayoutRoom(
+        id=i, room_type=i.split("_")[0], type=kind, polygon=poly, area=area, target_area=area,
+        centroid=((x0 + x1) / 2, (y0 + y1) / 2),
+    )
+
+
 def test_unfit_rooms_are_those_below_their_minimum_or_without_a_usable_square() -> None:
     from mansion.building.steps import unfit_rooms
-    from mansion.models.layout import LayoutRoom
 
-    def room(i: str, x0: float, y0: float, x1: float, y1: float, kind: str = "area") -> LayoutRoom:
-        poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-        area = (x1 - x0) * (y1 - y0)
-        return LayoutRoom(
-            id=i, room_type=i.split("_")[0], type=kind, polygon=poly, area=area, target_area=area,
-            centroid=((x0 + x1) / 2, (y0 + y1) / 2),
-        )
-
+    room = _box_room
     rooms = [
         room("corridor", 0, 0, 20, 2, "main"),
         room("ward_1", 0, 2, 4, 7),  # 20 m²: fits
@@ -345,7 +348,7 @@ def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> Non
                 room = note.split(" left out")[0]
                 assert room not in ids and room not in {r.id for r in f.layout.rooms}
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(steps, "leave_out", lambda graph, unfit: (graph, []))
+        mp.setattr(steps, "leave_out", lambda graph, unfit, keep=(): (graph, []))
         kept = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=7)
     assert not [r for f in kept.floors for r in f.relaxations if " left out" in r]
     assert unfit(b) < unfit(kept)
@@ -382,6 +385,73 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
 
     assert unfit(b) < unfit(once)
     assert all(a <= c for a, c in zip(misshapen(b), misshapen(once)))
+
+
+def test_narrow_rooms_and_the_smallest_of_each_type_a_floor_may_spare() -> None:
+    from mansion.building.steps import narrow_rooms, smallest_narrow
+
+    room = _box_room
+    rooms = [
+        room("corridor", 0, 0, 30, 2.5, "main"),  # a hospital's corridor: 2.4 m wide, kept
+        room("ward_1", 0, 2.5, 4, 7.5),  # 4 m wide: above a ward's 3.2 m
+        room("ward_2", 4, 2.5, 6.5, 8.5),  # 2.5 m wide, 15 m²
+        room("ward_3", 6.5, 2.5, 9, 9.5),  # 2.5 m wide, 17.5 m²
+        room("nurse_station", 9, 2.5, 10.5, 7.5),  # 1.5 m wide: below its own width
+        room("stair_1", 10.5, 2.5, 11.5, 8.5, "stair"),  # a core 1 m wide is never counted
+    ]
+    assert narrow_rooms(rooms, "hospital") == {"ward_2", "ward_3", "nurse_station"}
+    # in a hospital the corridor must be 2.4 m wide; in a home 1.1 m is enough, and wards keep 3.2
+    assert "corridor" not in narrow_rooms(rooms, "townhouse")
+    # one of each type, the smallest: the floor keeps ward_3 when it spares ward_2
+    spare = smallest_narrow(rooms, narrow_rooms(rooms, "hospital"))
+    assert spare == {
+        "ward_2": "laid out narrower than its clear width",
+        "nurse_station": "laid out narrower than its clear width",
+    }
+
+
+def test_leave_out_never_drops_a_room_the_description_asked_for() -> None:
+    from mansion.building.steps import leave_out
+
+    why = "laid out at 9.0 m², below its 14.5 m² minimum"
+    graph = _ward_graph()
+    fewer, notes = leave_out(graph, {"ward_1": why, "ward_2": why}, keep={"ward_1"})
+    assert {n.id for n in fewer.nodes} >= {"ward_1", "ward_1_ensuite", "ward_3"}
+    assert notes == [f"ward_2 left out (with ward_2_ensuite): {why}"]
+    # a room asked for inside a room's subtree keeps that room too (the ward with its ensuite)
+    fewer, notes = leave_out(graph, {"ward_1": why}, keep={"ward_1_ensuite"})
+    assert fewer is graph and notes == []
+
+
+def test_a_floor_laid_out_again_also_spares_a_room_below_its_width() -> None:
+    """A floor laid out again because a room is too small for it is too tight for its rooms
+    below their clear width as well: the two-storey school of the realism hundred's seed 63
+    leaves one of its classrooms out on its upper floor (recorded), and that floor ends with
+    fewer rooms unfit or below their width than when only the rooms too small are spared."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(63)
+
+    def defects(b: Building) -> int:
+        return sum(
+            len(steps.unfit_rooms(f.layout.rooms, f.graph)) + len(steps.narrow_rooms(f.layout.rooms, kind))
+            for f in b.floors if f.copy_of is None
+        )
+
+    b = generate_building(description, building_type=kind, floors=floors, seed=63)
+    notes = [r for f in b.floors for r in f.relaxations if "narrower than its clear width" in r]
+    assert notes and all(" left out" in n for n in notes)
+    for f in b.floors:
+        for note in f.relaxations:
+            if "narrower than its clear width" in note:
+                room = note.split(" left out")[0]
+                assert room not in {n.id for n in f.graph.nodes} | {r.id for r in f.layout.rooms}
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "SPARE_NARROW", False)
+        only_small = generate_building(description, building_type=kind, floors=floors, seed=63)
+    assert not [r for f in only_small.floors for r in f.relaxations if "narrower than its clear width" in r]
+    assert defects(b) < defects(only_small)
 
 
 def test_load_bearing_off_for_public_buildings() -> None:

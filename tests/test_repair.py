@@ -188,7 +188,7 @@ def test_repair_and_rebalance_bring_generated_rooms_closer_to_the_table() -> Non
 
         mp = pytest.MonkeyPatch()
         mp.setattr(steps, "floor_settings", patched)
-        mp.setattr(steps, "leave_out", lambda graph, unfit: (graph, []))
+        mp.setattr(steps, "leave_out", lambda graph, unfit, keep=(): (graph, []))
         try:
             out = []
             for seed in (6, 20, 34, 48):
