@@ -139,7 +139,8 @@ _ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "1st"
 
 #: Spelling variants folded before anything else reads the text.
 _FOLDS: tuple[tuple[str, str], ...] = (
-    (r"[’‘`´]", "'"),
+    (r"[’‘`´]|â\x80[\x98\x99]", "'"),
+    (r"â\x80[\x9c\x9d]", '"'),
     (r"[“”]", '"'),
     (r"#ref!", " "),
     (r"\bbed\s+rooms?\b", "bedroom"),
@@ -160,6 +161,8 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\b(right\s*side|rightside)\b", " right side "),
     (r"\bright\s+(?=next|by|beside|above|below|behind|at|in|on|off|outside|near)", " "),
     (r"\bdog\s*leg\b", " "),
+    # "the kitchen near room as the balcony", "kitchen opposite as the bedroom": the room named after "as"
+    (r"\b(near|opposite|next\s+to|adjacent\s+to)\s+(?:the\s+)?(?:rooms?\s+)?as\b", r"\1"),
 )
 
 _DIR_WORD = {
@@ -199,6 +202,11 @@ def _directions(text: str) -> str:
     screen = {"upper": "north", "top": "north", "lower": "south", "bottom": "south", "left": "west", "right": "east"}
     text = _SCREEN.sub(lambda m: f" D:{screen[m.group(1)]} ", text)
     text = re.sub(r"\bcentre\b", " D:centre ", text)
+    # "with the R1 on below", "R1 on above": a side named by a preposition standing alone
+    text = re.sub(
+        r"\b(on|at|to)\s+(?:the\s+)?(above|below|beneath|under|underneath)\b(?!\s*(?:of\b|the\b|its?\b|R\d))",
+        lambda m: f" {m.group(1)} D:{'north' if m.group(2) == 'above' else 'south'} ", text,
+    )
     return text
 
 
@@ -369,6 +377,14 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         return f" R{len(mentions) - 1} "
 
     tokens = lex.pattern.sub(mention, norm)
+    # "Balcony Room", "com Room", "common room1 Room": the word room after a room's name is part of it
+    tokens = re.sub(r"(R\d+)\s*rooms?\b", r"\1", tokens)
+    # "R1 and R2 between the room as R3": R3 is between R1 and R2; "R3 is between the room as R1 and R2"
+    tokens = re.sub(
+        r"((?:the\s+)?R\d+(?:\s*(?:,|and|&)\s*(?:the\s+)?R\d+)+)\s+(?:is\s+|are\s+)?(?:in\s*)?between\s+(?:the\s+)?rooms?\s+as\s+(?:the\s+)?(R\d+)",
+        r"\2 is between \1", tokens,
+    )
+    tokens = re.sub(r"\bbetween\s+(?:the\s+)?rooms?\s+as\b", "between", tokens)
     tokens = _directions(tokens)
     tokens = re.sub(r"[ \t]+", " ", tokens)
 
@@ -453,7 +469,7 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
     """Split a sentence at rooms that open a new description after a size ("... 10*4 feet R3
     at ..."), the mark of descriptions written without full stops, and at a list of other rooms
     ("with the R1 at the D:northwest corner"); each piece with whether it came from such a list."""
-    cuts = [m.start(2) for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
+    cuts = [m.start(2) for m in re.finditer(r"(\w+(?:'|\")?)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
             if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
         # "is in the R1's D:southwest corner": a part of another room, not a new description
         and not (m.group(1) in ("in", "at", "on", "into", "inside", "within")
@@ -498,7 +514,7 @@ _ROOMS = r"R\d+(?:\s*(?:,|and|&|as well as|plus)\s*(?:the\s+)?R\d+)*"
 _ROOMSEQ = re.compile(r"R(\d+)")
 _D = r"D:(\w+)"
 _DD = r"D:(\w+)(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?D:(\w+))*"
-_ART = r"(?:\s+(?:the|its|it's|it|his|her|their|a))?"
+_ART = r"(?:\s+(?:the|its|it's|it|his|her|their|a|your|our|my))?"
 
 _SIZE_UNIT = r"(?:'|feet|foot|ft\.?|m|meters?|metres?|mtrs?|\"|inches)?"
 _NUM_RE = r"(\d+(?:\.\d+)?)"
@@ -609,7 +625,13 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             used.append((m.start(), m.end()))
 
     # 4. Exterior walls: "D:south wall is exterior", "exterior to the D:north, D:east", "outside
-    # wall(s) to the D:east and D:west", "house exterior to the D:west".
+    # wall(s) to the D:east and D:west", "house exterior to the D:west"; the way in from outside,
+    # "is (the) entrance from the D:north side", "the entrance is on the D:west side".
+    for m in re.finditer(r"\b(?:entrance|entry|front\s+door|main\s+door)\s+(?:is\s+)?(?:from|on|at|to|of)\s+(?:the\s+)?(?:" + _DD + r")\s+(?:side|wall)\b", text):
+        if free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                if d != "centre":
+                    add("exterior", m, direction=d)
     for m in re.finditer(r"(?:" + _DD + r")\s+(?:wall|walls|side)\s+(?:is|are)\s+(?:an?\s+)?(?:the\s+)?(?:exterior|outside|external)", text):
         if free(m.start(), m.end()):
             for d in _dirs(m, text):
