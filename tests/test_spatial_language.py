@@ -717,13 +717,6 @@ def test_near_room_as_and_between_the_room_as() -> None:
     }
 
 
-def test_the_way_in_from_outside_is_an_exterior_wall() -> None:
-    assert facts("The living room is entrance from north side.") == {("living_room_0", "exterior", "north", ())}
-    assert facts("The living room is large; its entrance is on the west side.") == {("living_room_0", "exterior", "west", ())}
-    # entered from another room: a relation, not a wall
-    assert facts("The kitchen is entrance from living room.") == {("kitchen_2", "relation", "next_to", ("living_room_0",))}
-
-
 def test_same_type_rooms_matched_by_where_their_adjacent_rooms_are() -> None:
     # the protocol pairs balcony_5 with the kitchen (said to be in the south) and balcony_6 with
     # the master room (in the north): the balcony said to be in the north is balcony_6
@@ -737,3 +730,32 @@ def test_same_type_rooms_matched_by_where_their_adjacent_rooms_are() -> None:
     reading = match_rooms(read_description(text, known), rooms, adjacency)
     assert [s.direction for s in reading.about("balcony_6") if s.kind == "position"] == ["north"]
     assert [s.direction for s in reading.about("balcony_5") if s.kind == "position"] == ["south"]
+
+
+def test_north_of_it() -> None:
+    # a new subject "north of it": it is the room described before
+    assert facts("The kitchen is small. The living room is north of it.") == {
+        ("living_room_0", "relation", "north_of", ("kitchen_2",)),
+    }
+    # other rooms "to the west of it": it is the subject, and they lie west of it
+    assert facts("The kitchen is in the centre. It has the bathroom to the north of it and the balcony to the west of it.") == {
+        ("kitchen_2", "position", "centre", ()),
+        ("bathroom_3", "relation", "north_of", ("kitchen_2",)),
+        ("balcony_5", "relation", "west_of", ("kitchen_2",)),
+    }
+    # the subject "just south of it" after another room: it is that room
+    assert ("bathroom_3", "relation", "south_of", ("master_room_1",)) in facts("The bathroom is attached to the master, just south of it.")
+
+
+def test_a_listed_room_to_the_south_of_another_is_said_of_the_listed_room() -> None:
+    assert facts("The kitchen is in the northeast corner, with the bathroom to the south of the living room.") == {
+        ("kitchen_2", "position", "northeast", ()),
+        ("bathroom_3", "relation", "south_of", ("living_room_0",)),
+    }
+
+
+def test_a_direction_word_is_read_whole() -> None:
+    # "to the south of it" is never a direction "sout" that the next letters make a relation of
+    reading = read_description("The kitchen is small. The living room is north of it, with the bathroom to the south of it.", FLAT)
+    assert all(s.relation is None or s.relation[:-3] in DIRECTIONS or s.relation in ("between", "next_to", "across_from")
+               for _, s in reading.all())

@@ -396,6 +396,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         opening: int | None = None  # the subject before the sentence's list of other rooms
         listed = False
         for piece, listed in _run_on_split(sentence):
+            before = subject
             if listed and opening is None:
                 opening = subject
             elif not listed:
@@ -433,6 +434,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
                 )
                 if later:
                     subject = int(later.group(1) or later.group(2))
+            piece = _of_it(piece, subject, before)
             clauses.append(_Clause(piece, piece, subject))
         # "The master is on the east side with the living room at the northwest corner. It is
         # 12 feet wide": the rooms listed after "with" are placed relative to the sentence's
@@ -490,6 +492,32 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
     return [(p, flag) for p, flag in pieces if p.strip()]
 
 
+def _of_it(piece: str, subject: int | None, before: int | None) -> str:
+    """Resolve "D:north of it". After another room ("It has R1 to the D:north of it") "it" is the
+    subject, and R1 lies D:north of it: the words "of it" go. Said of the subject, "it" is the room
+    named last before it in the clause ("R3 is attached to the R1, just D:south of it"), or else,
+    in a clause that names a new subject ("The R2 is D:north of it"), the room described before."""
+    pattern = r"(D:\w+\b(?:\s+(?:side|part|corner|end))?\s+)(?:of|from)\s+(?:it|this\s+room|that\s+room)\b"
+    out, last = [], 0
+    for m in re.finditer(pattern, piece):
+        head = piece[: m.start()]
+        other = re.search(
+            r"R(\d+)(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|to|on|at|in|the|its))*\s*$", head
+        )
+        named = [int(k) for k in re.findall(r"R(\d+)", head) if int(k) != subject]
+        if other and int(other.group(1)) != subject:
+            rep = m.group(1)
+        elif named:
+            rep = f"{m.group(1)}of R{named[-1]} "
+        elif subject is not None and before is not None and subject != before:
+            rep = f"{m.group(1)}of R{before} "
+        else:
+            continue
+        out.append(piece[last : m.start()] + rep)
+        last = m.end()
+    return "".join(out) + piece[last:]
+
+
 def _opens_description(rest: str) -> bool:
     # A room opening a sentence is its subject ("R2 is ...", "R2 resides ...", "R2 D:south
     # direction"), unless it starts a list or a relation to the previous subject ("R2 and R3 are
@@ -512,8 +540,10 @@ def _plain(text: str, mentions: list[RoomMention]) -> str:
 _OWN_PART = r"(?:corner|side|part|portion|end|half|area|section|edge)\b"
 _ROOMS = r"R\d+(?:\s*(?:,|and|&|as well as|plus)\s*(?:the\s+)?R\d+)*"
 _ROOMSEQ = re.compile(r"R(\d+)")
-_D = r"D:(\w+)"
-_DD = r"D:(\w+)(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?D:(\w+))*"
+# "\b": a look-ahead after a direction must not see the word's last letters ("D:south of" is no
+# "D:sout" followed by "h of")
+_D = r"D:(\w+)\b"
+_DD = r"D:(\w+)\b(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?D:(\w+)\b)*"
 _ART = r"(?:\s+(?:the|its|it's|it|his|her|their|a|your|our|my))?"
 
 _SIZE_UNIT = r"(?:'|feet|foot|ft\.?|m|meters?|metres?|mtrs?|\"|inches)?"
@@ -574,11 +604,16 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         others = rooms_in(m.group(m.lastindex or 0))
         if not others or not free(m.start(), m.end()):
             continue
+        # "with the R3 to the D:south of the R1": said of R3, not of the subject
+        placed = re.search(
+            r"(?:^|\bwith\s+|,\s*|\band\s+)(?:the\s+|a\s+|an\s+)?R(\d+)(?:\s+(?:is|are|lies|sits|located|situated|just|directly|immediately|also))*\s*$",
+            text[: m.start()],
+        )
+        who = mentions[int(placed.group(1))] if placed and int(placed.group(1)) != clause.subject else subj
         for d in _dirs(m, text[: m.start(m.lastindex or 0)] + " " * (m.end() - m.start(m.lastindex or 0))):
-            if d == "centre":
-                add("relation", m, relation="between", others=others)
-            else:
-                add("relation", m, relation=_relation(d), others=others)
+            used.append((m.start(), m.end()))
+            relation = "between" if d == "centre" else _relation(d)
+            out.append(Statement(subject=who, kind="relation", relation=relation, others=others, text=_plain(m.group(0), mentions)))
     for m in re.finditer(r"\b(above|over|upside of|below|beneath|under|underneath|downside of|behind)\s+(?:the\s+)?(" + _ROOMS + ")", text):
         others = rooms_in(m.group(2))
         if others and free(m.start(), m.end()):
@@ -625,13 +660,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             used.append((m.start(), m.end()))
 
     # 4. Exterior walls: "D:south wall is exterior", "exterior to the D:north, D:east", "outside
-    # wall(s) to the D:east and D:west", "house exterior to the D:west"; the way in from outside,
-    # "is (the) entrance from the D:north side", "the entrance is on the D:west side".
-    for m in re.finditer(r"\b(?:entrance|entry|front\s+door|main\s+door)\s+(?:is\s+)?(?:from|on|at|to|of)\s+(?:the\s+)?(?:" + _DD + r")\s+(?:side|wall)\b", text):
-        if free(m.start(), m.end()):
-            for d in _dirs(m, text):
-                if d != "centre":
-                    add("exterior", m, direction=d)
+    # wall(s) to the D:east and D:west", "house exterior to the D:west".
     for m in re.finditer(r"(?:" + _DD + r")\s+(?:wall|walls|side)\s+(?:is|are)\s+(?:an?\s+)?(?:the\s+)?(?:exterior|outside|external)", text):
         if free(m.start(), m.end()):
             for d in _dirs(m, text):
