@@ -759,3 +759,17 @@ def test_a_direction_word_is_read_whole() -> None:
     reading = read_description("The kitchen is small. The living room is north of it, with the bathroom to the south of it.", FLAT)
     assert all(s.relation is None or s.relation[:-3] in DIRECTIONS or s.relation in ("between", "next_to", "across_from")
                for _, s in reading.all())
+
+
+
+def test_a_room_then_its_position_after_its_own_pronoun() -> None:
+    # "The bathroom it's on the ...": a new description in a run-on, not more about the balcony
+    text = "The balcony is small and it measures 3' x 12' The bathroom it's on the north east corner of the apartment."
+    assert ("bathroom_3", "position", "northeast", ()) in facts(text)
+    assert not any(rid == "balcony_5" and kind == "position" for rid, kind, *_ in facts(text))
+
+
+def test_comfort_room_and_community_room() -> None:
+    assert facts("The comfort room is in the west. The community room is on the south side.") == {
+        ("bathroom_3", "position", "west", ()), ("common_room_4", "position", "south", ()),
+    }

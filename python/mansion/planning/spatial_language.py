@@ -252,9 +252,9 @@ def _numbers(text: str) -> str:
 #: read through the planner's vocabulary (:data:`ROOM_SYNONYMS`) and their own name.
 _RESIDENTIAL: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("master_room", (r"master\s+bedroom", r"master'?s?\s+room", r"main\s+bedroom", r"master\s+suite", r"master")),
-    ("common_room", (r"common\s+room", r"common", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
+    ("common_room", (r"common\s+room", r"community\s+room", r"common", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
     ("bedroom", (r"bedroom", r"bed")),
-    ("bathroom", (r"bathroom", r"bath", r"washroom", r"restroom", r"toilet", r"wc", r"lavatory", r"shower\s+room", r"ensuite", r"en\s+suite")),
+    ("bathroom", (r"bathroom", r"bath", r"comfort\s+room", r"washroom", r"restroom", r"toilet", r"wc", r"lavatory", r"shower\s+room", r"ensuite", r"en\s+suite")),
     ("living_room", (r"living\s+room", r"living\s+area", r"living", r"lounge", r"sitting\s+room", r"family\s+room", r"hall")),
     ("dining_room", (r"dining\s+room", r"dining\s+area", r"dining")),
     ("kitchen", (r"kitchen", r"kitchenette", r"galley")),
@@ -471,7 +471,7 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
     """Split a sentence at rooms that open a new description after a size ("... 10*4 feet R3
     at ..."), the mark of descriptions written without full stops, and at a list of other rooms
     ("with the R1 at the D:northwest corner"); each piece with whether it came from such a list."""
-    cuts = [m.start(2) for m in re.finditer(r"(\w+(?:'|\")?)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
+    cuts = [m.start(2) for m in re.finditer(r"(\w+(?:'|\")?)\s+((?:the\s+)?R\d+\s+(?:it'?s\s+|it\s+is\s+)?(?:is|at|in|on|located|location|lies|D:))", sentence)
             if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
         # "is in the R1's D:southwest corner": a part of another room, not a new description
         and not (m.group(1) in ("in", "at", "on", "into", "inside", "within")
