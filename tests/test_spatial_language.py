@@ -773,3 +773,14 @@ def test_comfort_room_and_community_room() -> None:
     assert facts("The comfort room is in the west. The community room is on the south side.") == {
         ("bathroom_3", "position", "west", ()), ("common_room_4", "position", "south", ()),
     }
+
+
+def test_a_room_listed_in_a_part_of_the_plan_is_there_too() -> None:
+    # "with the bathroom in the west": to the west of the subject and in the west of the plan;
+    # "to the south" only to the subject's south; each room's words are merged apart
+    assert facts("The kitchen is in the north with the bathroom in the west and the living room to the south.") == {
+        ("kitchen_2", "position", "north", ()),
+        ("bathroom_3", "relation", "west_of", ("kitchen_2",)),
+        ("bathroom_3", "position", "west", ()),
+        ("living_room_0", "relation", "south_of", ("kitchen_2",)),
+    }

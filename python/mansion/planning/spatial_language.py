@@ -639,11 +639,16 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             continue
         # "R1 D:north D:corner" style clauses (a room then a position of the plan) are positions
         # of the plan when followed by "of the house": the negative look-ahead handled "of".
+        # "with the R1 in the D:west": "in" names a part of the plan too (the room is there as
+        # well as to that side of the subject); "to"/"on" only the side of the subject
+        inside = re.search(r"\bin(?:\s+(?:the|its|it's|it|his|her|their|a))?\s+D:", m.group(0)) is not None
         for d in _dirs(m, text):
             if d == "centre":
                 continue
             for o in others:
                 out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
+                if inside:
+                    out.append(Statement(subject=o, kind="position", direction=d, text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
     # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
     by_sides = r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")"
@@ -747,8 +752,12 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
 
 
 def _merge_positions(found: list[Statement]) -> list[Statement]:
-    """Combine a clause's bare position words: "D:north D:east" → northeast; "D:centre" with a
-    side keeps the side; the same direction twice is said once."""
+    """Combine a clause's bare position words, room by room: "D:north D:east" → northeast;
+    "D:centre" with a side keeps the side; the same direction twice is said once."""
+    subjects = list(dict.fromkeys(s.subject for s in found if s.kind == "position"))
+    if len(subjects) > 1:
+        merged = {subject: _merge_positions([s for s in found if s.kind == "position" and s.subject == subject]) for subject in subjects}
+        return [s for s in found if s.kind != "position"] + [s for subject in subjects for s in merged[subject]]
     positions = [s for s in found if s.kind == "position"]
     if any(s.direction != "centre" for s in positions):
         # "the north centre", "centre of the east side": the middle of a side is that side
