@@ -103,9 +103,6 @@ class SeedWeights:
     hub_leftover: bool = True
     #: a room with no position of its own is seeded amid the rooms it is adjacent to
     unplaced_to_neighbours: bool = False
-    #: ... where its box reaches the outside of the free region (a room with a window) and stays
-    #: clear of the other rooms' boxes, this much against the distance to its neighbours
-    unplaced_outside: float = 0.0
 
 
 @dataclass
@@ -126,21 +123,6 @@ class SeedReport:
     @property
     def unmet(self) -> list[tuple[str, Statement]]:
         return [(r, s) for r, s, ok in self.used if not ok]
-
-
-def _depth(mask: npt.NDArray[np.bool_]) -> npt.NDArray[np.float64]:
-    """Steps (4-neighbour) from each free cell to the nearest cell outside the region (1 on its
-    edge, 0 outside)."""
-    import numpy as np
-
-    depth = np.zeros(mask.shape)
-    cur = np.pad(mask, 1)
-    k = 0
-    while cur.any():
-        k += 1
-        depth[cur[1:-1, 1:-1]] = k
-        cur = cur & np.roll(cur, 1, 0) & np.roll(cur, -1, 0) & np.roll(cur, 1, 1) & np.roll(cur, -1, 1)
-    return depth
 
 
 def _half_sizes(room: SeedRoom, statements: Sequence[Statement], cell: float) -> tuple[float, float]:
@@ -329,8 +311,6 @@ def place_seeds(
         # at the edge, farther from its true place than the plan's centre is; the middle of the
         # rooms it must touch is a better guess (the hub only when it is the only one).
         seeded = np.zeros(X.size, dtype=bool)
-        if w.unplaced_outside > 0:
-            inside = _depth(mask)
         for k in range(n):
             if k == hub or any(s.kind in ("position", "exterior") for s in about[rooms[k].id]):
                 continue
@@ -344,21 +324,7 @@ def place_seeds(
             for j in range(n):
                 if j != k:
                     near |= (np.abs(X - X[pos[j]]) < 2) & (np.abs(Y - Y[pos[j]]) < 2)
-            extra = 0.0
-            if w.unplaced_outside > 0:
-                # most rooms have a window: the room's box should reach the region's edge, and
-                # not lie over the rooms already placed
-                hx, hy = half[k]
-                reach = np.maximum(0.0, inside[rr, cc] - min(hx, hy) - 1.0)
-                clash = np.zeros(X.size)
-                for j in range(n):
-                    if j == k or j == hub:
-                        continue
-                    ox = np.maximum(0.0, hx + half[j][0] - np.abs(X - X[pos[j]]))
-                    oy = np.maximum(0.0, hy + half[j][1] - np.abs(Y - Y[pos[j]]))
-                    clash += ox * oy / (4 * hx * hy)
-                extra = w.unplaced_outside * (reach**2 + scale**2 * clash)
-            pos[k] = int(np.argmin((X - tx) ** 2 + (Y - ty) ** 2 + extra + np.where(near | seeded, 1e6, 0.0)))
+            pos[k] = int(np.argmin((X - tx) ** 2 + (Y - ty) ** 2 + np.where(near | seeded, 1e6, 0.0)))
             seeded[pos[k]] = True
 
     if w.hub_leftover:
@@ -519,7 +485,9 @@ def match_rooms(
 
 
 #: How much the compass words of rooms the protocol pairs count in :func:`match_rooms`, per unit
-#: of their difference (each coordinate of a direction is -1, 0 or 1).
+#: of their difference (each coordinate of a direction is -1, 0 or 1). T2D dev, all 500 plans:
+#: same-type rooms whose seed is nearer a sibling's true centroid 181 -> 155 of 953 (1: 157, 2:
+#: 160); on the 24 plans whose matching it changes, micro-IoU odd ids 35.5 -> 44.6, even 42.4 -> 56.4.
 MATCH_COMPASS = 0.5
 
 
