@@ -754,10 +754,10 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
 def _merge_positions(found: list[Statement]) -> list[Statement]:
     """Combine a clause's bare position words, room by room: "D:north D:east" → northeast;
     "D:centre" with a side keeps the side; the same direction twice is said once."""
-    subjects = list(dict.fromkeys(s.subject for s in found if s.kind == "position"))
-    if len(subjects) > 1:
-        merged = {subject: _merge_positions([s for s in found if s.kind == "position" and s.subject == subject]) for subject in subjects}
-        return [s for s in found if s.kind != "position"] + [s for subject in subjects for s in merged[subject]]
+    rooms = list(dict.fromkeys(s.subject for s in found if s.kind == "position"))
+    if len(rooms) > 1:
+        each = [_merge_positions([s for s in found if s.kind == "position" and s.subject == room]) for room in rooms]
+        return [s for s in found if s.kind != "position"] + [s for said in each for s in said]
     positions = [s for s in found if s.kind == "position"]
     if any(s.direction != "centre" for s in positions):
         # "the north centre", "centre of the east side": the middle of a side is that side
