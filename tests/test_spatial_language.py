@@ -661,3 +661,126 @@ def test_a_place_then_the_room_there(sentence: str, fact: tuple[str, str, str, t
     found = facts("The living room is in the middle. " + sentence)
     assert fact in found
     assert {f for f in found if f[0] == "living_room_0"} == {("living_room_0", "position", "centre", ())}
+
+
+def test_a_type_word_followed_by_room_names_the_room() -> None:
+    # "Balcony Room", "com Room": the word room is part of the name, so the relation after it reads
+    text = "Bath Room located on the north east corner with com Room on right, total size of 7 feet by 3 feet."
+    assert facts(text) == {
+        ("bathroom_3", "position", "northeast", ()),
+        ("common_room_4", "relation", "east_of", ("bathroom_3",)),
+    }
+
+
+def test_a_side_named_by_above_or_below_alone() -> None:
+    text = "The kitchen is located on the north west corner with the living room on below, and the balcony on above."
+    assert facts(text) == {
+        ("kitchen_2", "position", "northwest", ()),
+        ("living_room_0", "relation", "south_of", ("kitchen_2",)),
+        ("balcony_5", "relation", "north_of", ("kitchen_2",)),
+    }
+    # "above the R" is still a relation to that room; "above 10 feet" is no side
+    assert facts("The kitchen is above the living room.") == {("kitchen_2", "relation", "north_of", ("living_room_0",))}
+    assert facts("The kitchen is approximately above 10 feet long.") == set()
+
+
+def test_west_of_your_room() -> None:
+    assert facts("The kitchen lies east of your living room and west of your master bedroom.") == {
+        ("kitchen_2", "relation", "east_of", ("living_room_0",)),
+        ("kitchen_2", "relation", "west_of", ("master_room_1",)),
+    }
+
+
+def test_descriptions_run_on_after_a_size_in_feet_marks() -> None:
+    # "12' x 10' The ...": a new room opens after a size written with foot marks (and with the
+    # marks mis-decoded from UTF-8, as text copied between encodings often has them)
+    for mark in ("'", "\u00e2\u0080\u0098"):
+        text = (
+            f"The kitchen is on the north side of the apartment next to the living room and it measures 12{mark} x 10{mark} "
+            f"The bathroom is on the south west corner of the apartment next to the kitchen and it measures 5{mark} x 5{mark}"
+        )
+        got = facts(text)
+        assert ("kitchen_2", "position", "north", ()) in got
+        assert ("bathroom_3", "position", "southwest", ()) in got
+        assert ("kitchen_2", "position", "southwest", ()) not in got
+
+
+def test_near_room_as_and_between_the_room_as() -> None:
+    assert facts("The kitchen is near room as the living room.") == {("kitchen_2", "relation", "next_to", ("living_room_0",))}
+    assert facts("The kitchen opposite as the living room.") == {("kitchen_2", "relation", "across_from", ("living_room_0",))}
+    # "R1 and R2 between the room as R3": R3 lies between R1 and R2
+    assert facts("The balcony is small. The master room and the kitchen between the room as bathroom.") == {
+        ("bathroom_3", "relation", "between", ("master_room_1", "kitchen_2")),
+    }
+    assert facts("The bathroom is between the room as kitchen and master room.") == {
+        ("bathroom_3", "relation", "between", ("kitchen_2", "master_room_1")),
+    }
+
+
+def test_same_type_rooms_matched_by_where_their_adjacent_rooms_are() -> None:
+    # the protocol pairs balcony_5 with the kitchen (said to be in the south) and balcony_6 with
+    # the master room (in the north): the balcony said to be in the north is balcony_6
+    known = [*FLAT, KnownRoom("balcony_6", "balcony")]
+    rooms = [SeedRoom(k.id, k.room_type, 10.0) for k in known]
+    text = (
+        "The kitchen is on the south side. The master room is in the north east corner. "
+        "Balcony 1 is in the north. Balcony 2 is in the south."
+    )
+    adjacency = [("balcony_5", "kitchen_2"), ("balcony_6", "master_room_1")]
+    reading = match_rooms(read_description(text, known), rooms, adjacency)
+    assert [s.direction for s in reading.about("balcony_6") if s.kind == "position"] == ["north"]
+    assert [s.direction for s in reading.about("balcony_5") if s.kind == "position"] == ["south"]
+
+
+def test_north_of_it() -> None:
+    # a new subject "north of it": it is the room described before
+    assert facts("The kitchen is small. The living room is north of it.") == {
+        ("living_room_0", "relation", "north_of", ("kitchen_2",)),
+    }
+    # other rooms "to the west of it": it is the subject, and they lie west of it
+    assert facts("The kitchen is in the centre. It has the bathroom to the north of it and the balcony to the west of it.") == {
+        ("kitchen_2", "position", "centre", ()),
+        ("bathroom_3", "relation", "north_of", ("kitchen_2",)),
+        ("balcony_5", "relation", "west_of", ("kitchen_2",)),
+    }
+    # the subject "just south of it" after another room: it is that room
+    assert ("bathroom_3", "relation", "south_of", ("master_room_1",)) in facts("The bathroom is attached to the master, just south of it.")
+
+
+def test_a_listed_room_to_the_south_of_another_is_said_of_the_listed_room() -> None:
+    assert facts("The kitchen is in the northeast corner, with the bathroom to the south of the living room.") == {
+        ("kitchen_2", "position", "northeast", ()),
+        ("bathroom_3", "relation", "south_of", ("living_room_0",)),
+    }
+
+
+def test_a_direction_word_is_read_whole() -> None:
+    # "to the south of it" is never a direction "sout" that the next letters make a relation of
+    reading = read_description("The kitchen is small. The living room is north of it, with the bathroom to the south of it.", FLAT)
+    assert all(s.relation is None or s.relation[:-3] in DIRECTIONS or s.relation in ("between", "next_to", "across_from")
+               for _, s in reading.all())
+
+
+
+def test_a_room_then_its_position_after_its_own_pronoun() -> None:
+    # "The bathroom it's on the ...": a new description in a run-on, not more about the balcony
+    text = "The balcony is small and it measures 3' x 12' The bathroom it's on the north east corner of the apartment."
+    assert ("bathroom_3", "position", "northeast", ()) in facts(text)
+    assert not any(rid == "balcony_5" and kind == "position" for rid, kind, *_ in facts(text))
+
+
+def test_comfort_room_and_community_room() -> None:
+    assert facts("The comfort room is in the west. The community room is on the south side.") == {
+        ("bathroom_3", "position", "west", ()), ("common_room_4", "position", "south", ()),
+    }
+
+
+def test_a_room_listed_in_a_part_of_the_plan_is_there_too() -> None:
+    # "with the bathroom in the west": to the west of the subject and in the west of the plan;
+    # "to the south" only to the subject's south; each room's words are merged apart
+    assert facts("The kitchen is in the north with the bathroom in the west and the living room to the south.") == {
+        ("kitchen_2", "position", "north", ()),
+        ("bathroom_3", "relation", "west_of", ("kitchen_2",)),
+        ("bathroom_3", "position", "west", ()),
+        ("living_room_0", "relation", "south_of", ("kitchen_2",)),
+    }

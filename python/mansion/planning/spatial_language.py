@@ -139,7 +139,8 @@ _ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "1st"
 
 #: Spelling variants folded before anything else reads the text.
 _FOLDS: tuple[tuple[str, str], ...] = (
-    (r"[’‘`´]", "'"),
+    (r"[’‘`´]|â\x80[\x98\x99]", "'"),
+    (r"â\x80[\x9c\x9d]", '"'),
     (r"[“”]", '"'),
     (r"#ref!", " "),
     (r"\bbed\s+rooms?\b", "bedroom"),
@@ -160,6 +161,8 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\b(right\s*side|rightside)\b", " right side "),
     (r"\bright\s+(?=next|by|beside|above|below|behind|at|in|on|off|outside|near)", " "),
     (r"\bdog\s*leg\b", " "),
+    # "the kitchen near room as the balcony", "kitchen opposite as the bedroom": the room named after "as"
+    (r"\b(near|opposite|next\s+to|adjacent\s+to)\s+(?:the\s+)?(?:rooms?\s+)?as\b", r"\1"),
 )
 
 _DIR_WORD = {
@@ -199,6 +202,11 @@ def _directions(text: str) -> str:
     screen = {"upper": "north", "top": "north", "lower": "south", "bottom": "south", "left": "west", "right": "east"}
     text = _SCREEN.sub(lambda m: f" D:{screen[m.group(1)]} ", text)
     text = re.sub(r"\bcentre\b", " D:centre ", text)
+    # "with the R1 on below", "R1 on above": a side named by a preposition standing alone
+    text = re.sub(
+        r"\b(on|at|to)\s+(?:the\s+)?(above|below|beneath|under|underneath)\b(?!\s*(?:of\b|the\b|its?\b|R\d))",
+        lambda m: f" {m.group(1)} D:{'north' if m.group(2) == 'above' else 'south'} ", text,
+    )
     return text
 
 
@@ -244,9 +252,9 @@ def _numbers(text: str) -> str:
 #: read through the planner's vocabulary (:data:`ROOM_SYNONYMS`) and their own name.
 _RESIDENTIAL: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("master_room", (r"master\s+bedroom", r"master'?s?\s+room", r"main\s+bedroom", r"master\s+suite", r"master")),
-    ("common_room", (r"common\s+room", r"common", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
+    ("common_room", (r"common\s+room", r"community\s+room", r"common", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
     ("bedroom", (r"bedroom", r"bed")),
-    ("bathroom", (r"bathroom", r"bath", r"washroom", r"restroom", r"toilet", r"wc", r"lavatory", r"shower\s+room", r"ensuite", r"en\s+suite")),
+    ("bathroom", (r"bathroom", r"bath", r"comfort\s+room", r"washroom", r"restroom", r"toilet", r"wc", r"lavatory", r"shower\s+room", r"ensuite", r"en\s+suite")),
     ("living_room", (r"living\s+room", r"living\s+area", r"living", r"lounge", r"sitting\s+room", r"family\s+room", r"hall")),
     ("dining_room", (r"dining\s+room", r"dining\s+area", r"dining")),
     ("kitchen", (r"kitchen", r"kitchenette", r"galley")),
@@ -369,6 +377,14 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         return f" R{len(mentions) - 1} "
 
     tokens = lex.pattern.sub(mention, norm)
+    # "Balcony Room", "com Room", "common room1 Room": the word room after a room's name is part of it
+    tokens = re.sub(r"(R\d+)\s*rooms?\b", r"\1", tokens)
+    # "R1 and R2 between the room as R3": R3 is between R1 and R2; "R3 is between the room as R1 and R2"
+    tokens = re.sub(
+        r"((?:the\s+)?R\d+(?:\s*(?:,|and|&)\s*(?:the\s+)?R\d+)+)\s+(?:is\s+|are\s+)?(?:in\s*)?between\s+(?:the\s+)?rooms?\s+as\s+(?:the\s+)?(R\d+)",
+        r"\2 is between \1", tokens,
+    )
+    tokens = re.sub(r"\bbetween\s+(?:the\s+)?rooms?\s+as\b", "between", tokens)
     tokens = _directions(tokens)
     tokens = re.sub(r"[ \t]+", " ", tokens)
 
@@ -380,6 +396,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         opening: int | None = None  # the subject before the sentence's list of other rooms
         listed = False
         for piece, listed in _run_on_split(sentence):
+            before = subject
             if listed and opening is None:
                 opening = subject
             elif not listed:
@@ -417,6 +434,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
                 )
                 if later:
                     subject = int(later.group(1) or later.group(2))
+            piece = _of_it(piece, subject, before)
             clauses.append(_Clause(piece, piece, subject))
         # "The master is on the east side with the living room at the northwest corner. It is
         # 12 feet wide": the rooms listed after "with" are placed relative to the sentence's
@@ -453,7 +471,7 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
     """Split a sentence at rooms that open a new description after a size ("... 10*4 feet R3
     at ..."), the mark of descriptions written without full stops, and at a list of other rooms
     ("with the R1 at the D:northwest corner"); each piece with whether it came from such a list."""
-    cuts = [m.start(2) for m in re.finditer(r"(\w+)\s+((?:the\s+)?R\d+\s+(?:is|at|in|on|located|location|lies|D:))", sentence)
+    cuts = [m.start(2) for m in re.finditer(r"(\w+(?:'|\")?)\s+((?:the\s+)?R\d+\s+(?:it'?s\s+|it\s+is\s+)?(?:is|at|in|on|located|location|lies|D:))", sentence)
             if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
         # "is in the R1's D:southwest corner": a part of another room, not a new description
         and not (m.group(1) in ("in", "at", "on", "into", "inside", "within")
@@ -472,6 +490,32 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
         start, was_list = c, c in listed
     pieces.append((sentence[start:], was_list))
     return [(p, flag) for p, flag in pieces if p.strip()]
+
+
+def _of_it(piece: str, subject: int | None, before: int | None) -> str:
+    """Resolve "D:north of it". After another room ("It has R1 to the D:north of it") "it" is the
+    subject, and R1 lies D:north of it: the words "of it" go. Said of the subject, "it" is the room
+    named last before it in the clause ("R3 is attached to the R1, just D:south of it"), or else,
+    in a clause that names a new subject ("The R2 is D:north of it"), the room described before."""
+    pattern = r"(D:\w+\b(?:\s+(?:side|part|corner|end))?\s+)(?:of|from)\s+(?:it|this\s+room|that\s+room)\b"
+    out, last = [], 0
+    for m in re.finditer(pattern, piece):
+        head = piece[: m.start()]
+        other = re.search(
+            r"R(\d+)(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|to|on|at|in|the|its))*\s*$", head
+        )
+        named = [int(k) for k in re.findall(r"R(\d+)", head) if int(k) != subject]
+        if other and int(other.group(1)) != subject:
+            rep = m.group(1)
+        elif named:
+            rep = f"{m.group(1)}of R{named[-1]} "
+        elif subject is not None and before is not None and subject != before:
+            rep = f"{m.group(1)}of R{before} "
+        else:
+            continue
+        out.append(piece[last : m.start()] + rep)
+        last = m.end()
+    return "".join(out) + piece[last:]
 
 
 def _opens_description(rest: str) -> bool:
@@ -496,9 +540,11 @@ def _plain(text: str, mentions: list[RoomMention]) -> str:
 _OWN_PART = r"(?:corner|side|part|portion|end|half|area|section|edge)\b"
 _ROOMS = r"R\d+(?:\s*(?:,|and|&|as well as|plus)\s*(?:the\s+)?R\d+)*"
 _ROOMSEQ = re.compile(r"R(\d+)")
-_D = r"D:(\w+)"
-_DD = r"D:(\w+)(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?D:(\w+))*"
-_ART = r"(?:\s+(?:the|its|it's|it|his|her|their|a))?"
+# "\b": a look-ahead after a direction must not see the word's last letters ("D:south of" is no
+# "D:sout" followed by "h of")
+_D = r"D:(\w+)\b"
+_DD = r"D:(\w+)\b(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?D:(\w+)\b)*"
+_ART = r"(?:\s+(?:the|its|it's|it|his|her|their|a|your|our|my))?"
 
 _SIZE_UNIT = r"(?:'|feet|foot|ft\.?|m|meters?|metres?|mtrs?|\"|inches)?"
 _NUM_RE = r"(\d+(?:\.\d+)?)"
@@ -558,11 +604,16 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         others = rooms_in(m.group(m.lastindex or 0))
         if not others or not free(m.start(), m.end()):
             continue
+        # "with the R3 to the D:south of the R1": said of R3, not of the subject
+        placed = re.search(
+            r"(?:^|\bwith\s+|,\s*|\band\s+)(?:the\s+|a\s+|an\s+)?R(\d+)(?:\s+(?:is|are|lies|sits|located|situated|just|directly|immediately|also))*\s*$",
+            text[: m.start()],
+        )
+        who = mentions[int(placed.group(1))] if placed and int(placed.group(1)) != clause.subject else subj
         for d in _dirs(m, text[: m.start(m.lastindex or 0)] + " " * (m.end() - m.start(m.lastindex or 0))):
-            if d == "centre":
-                add("relation", m, relation="between", others=others)
-            else:
-                add("relation", m, relation=_relation(d), others=others)
+            used.append((m.start(), m.end()))
+            relation = "between" if d == "centre" else _relation(d)
+            out.append(Statement(subject=who, kind="relation", relation=relation, others=others, text=_plain(m.group(0), mentions)))
     for m in re.finditer(r"\b(above|over|upside of|below|beneath|under|underneath|downside of|behind)\s+(?:the\s+)?(" + _ROOMS + ")", text):
         others = rooms_in(m.group(2))
         if others and free(m.start(), m.end()):
@@ -588,11 +639,16 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             continue
         # "R1 D:north D:corner" style clauses (a room then a position of the plan) are positions
         # of the plan when followed by "of the house": the negative look-ahead handled "of".
+        # "with the R1 in the D:west": "in" names a part of the plan too (the room is there as
+        # well as to that side of the subject); "to"/"on" only the side of the subject
+        inside = re.search(r"\bin(?:\s+(?:the|its|it's|it|his|her|their|a))?\s+D:", m.group(0)) is not None
         for d in _dirs(m, text):
             if d == "centre":
                 continue
             for o in others:
                 out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
+                if inside:
+                    out.append(Statement(subject=o, kind="position", direction=d, text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
     # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
     by_sides = r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")"
@@ -696,8 +752,12 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
 
 
 def _merge_positions(found: list[Statement]) -> list[Statement]:
-    """Combine a clause's bare position words: "D:north D:east" → northeast; "D:centre" with a
-    side keeps the side; the same direction twice is said once."""
+    """Combine a clause's bare position words, room by room: "D:north D:east" → northeast;
+    "D:centre" with a side keeps the side; the same direction twice is said once."""
+    rooms = list(dict.fromkeys(s.subject for s in found if s.kind == "position"))
+    if len(rooms) > 1:
+        each = [_merge_positions([s for s in found if s.kind == "position" and s.subject == room]) for room in rooms]
+        return [s for s in found if s.kind != "position"] + [s for said in each for s in said]
     positions = [s for s in found if s.kind == "position"]
     if any(s.direction != "centre" for s in positions):
         # "the north centre", "centre of the east side": the middle of a side is that side
