@@ -496,6 +496,35 @@ def test_a_layout_whose_rooms_touch_only_their_adjacent_rooms_and_fill_their_box
     )
 
 
+def test_a_layout_whose_rooms_keep_their_stated_proportions_agrees_more() -> None:
+    from mansion.planning.spatial_seeds import disagreement_parts
+
+    free = FreeGrid(np.ones((6, 6), dtype=bool))
+    rooms = [SeedRoom("kitchen_2", "kitchen", 12.0), SeedRoom("living_room_0", "living_room", 24.0)]
+    # the kitchen 6 cells east-west by 2 north-south (3 : 1), the living room the rest
+    wide = np.zeros((6, 6), dtype=np.int64)
+    wide[:2, :] = 0
+    wide[2:, :] = 1
+    # the same kitchen turned: 2 cells east-west by 6 north-south
+    tall = np.ones((6, 6), dtype=np.int64)
+    tall[:, :2] = 0
+    ids = ["kitchen_2", "living_room_0"]
+
+    def proportion(text: str, labels: np.ndarray) -> float:
+        reading = read_description(text, FLAT)
+        return disagreement_parts(reading, rooms, free, [], _Grid(labels, ids))["proportion"]
+
+    # "wide by deep" says which way the sides run: the wide kitchen is right, the turned one is
+    # off by log 3 twice over (its 1 : 3 against the stated 3 : 1)
+    oriented = "The kitchen is approximately 12 feet wide by 4 feet deep."
+    assert proportion(oriented, wide) == pytest.approx(0.0)
+    assert proportion(oriented, tall) == pytest.approx(2 * np.log(3))
+    # "12' x 4'" does not: either way round agrees
+    assert proportion("The kitchen is about 12' x 4'.", tall) == pytest.approx(0.0)
+    # a text without sizes says nothing about proportions
+    assert proportion("The kitchen is in the south.", tall) == 0.0
+
+
 def test_text_seeds_are_solved_without_holding_rooms_to_them(text_plans: Path) -> None:
     from mansion.eval.text_placement import TEXT_ENERGY
     from mansion.floorplan import EnergyWeights
