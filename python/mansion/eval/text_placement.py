@@ -10,8 +10,9 @@ A few seed sets are tried (the seed solve under a handful of weightings); each i
 layout that agrees best with the text (:func:`mansion.planning.spatial_seeds.layout_disagreement`:
 rooms reaching the walls they are said to be at, relations in the right order, areas and
 adjacency met, no contact the adjacency does not pair, rooms filling their boxes, stated widths
-and depths in proportion) and that shares most with the other seed sets' layouts (:data:`CONSENSUS`) is kept, after the :data:`REFINE` best
-are laid out again from seeds at their own rooms. The solve is the caller's; ``mansion eval
+and depths in proportion) and that shares most with the other seed sets' layouts
+(:data:`CONSENSUS`) is kept, after the :data:`REFINE` best are laid out again from seeds at their
+own rooms. The solve is the caller's; ``mansion eval
 floorplan --planner text`` runs it under :data:`TEXT_ENERGY`. A seed set the solver cannot lay
 out is skipped; only when none can is the plan a failure.
 """
