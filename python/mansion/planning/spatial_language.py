@@ -571,9 +571,9 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     def rooms_in(span: str) -> tuple[RoomMention, ...]:
         return tuple(mentions[int(k)] for k in _ROOMSEQ.findall(span) if int(k) != clause.subject)
 
-    def add(kind: str, m: re.Match[str], **kw: object) -> None:
+    def add(kind: str, m: re.Match[str], subject: RoomMention | None = None, **kw: object) -> None:
         used.append((m.start(), m.end()))
-        out.append(Statement(subject=subj, kind=kind, text=_plain(m.group(0), mentions), **kw))  # type: ignore[arg-type]
+        out.append(Statement(subject=subj if subject is None else subject, kind=kind, text=_plain(m.group(0), mentions), **kw))  # type: ignore[arg-type]
 
     # 0. A part of another room or a room set into a corner:
     # - a part of another room, "in the R1's D:southwest corner": the subject lies toward that
@@ -611,9 +611,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         )
         who = mentions[int(placed.group(1))] if placed and int(placed.group(1)) != clause.subject else subj
         for d in _dirs(m, text[: m.start(m.lastindex or 0)] + " " * (m.end() - m.start(m.lastindex or 0))):
-            used.append((m.start(), m.end()))
-            relation = "between" if d == "centre" else _relation(d)
-            out.append(Statement(subject=who, kind="relation", relation=relation, others=others, text=_plain(m.group(0), mentions)))
+            add("relation", m, subject=who, relation="between" if d == "centre" else _relation(d), others=others)
     for m in re.finditer(r"\b(above|over|upside of|below|beneath|under|underneath|downside of|behind)\s+(?:the\s+)?(" + _ROOMS + ")", text):
         others = rooms_in(m.group(2))
         if others and free(m.start(), m.end()):
