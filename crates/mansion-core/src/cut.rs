@@ -110,6 +110,18 @@ pub struct CutOptions {
     /// past the end: none).
     #[serde(default)]
     pub clear: Vec<usize>,
+    /// Retries a round first spends with every finished room's width rule raised to its clear
+    /// width ([`widened`]); a round none of them lays out is cut as before. 0 (absent): never.
+    #[serde(default)]
+    pub wide_retries: usize,
+    /// Per label, the widest clear width a room its zone will hold needs (empty: zones keep no
+    /// rule in the wide retries).
+    #[serde(default)]
+    pub zone_clear: Vec<usize>,
+    /// Width rules apply to zones later rounds cut too, not only to finished rooms (set by
+    /// [`widened`]).
+    #[serde(default)]
+    pub zone_rules: bool,
 }
 
 use serde::{Deserialize, Serialize};
@@ -136,6 +148,9 @@ impl Default for CutOptions {
             reseeds: 0,
             slabs: false,
             clear: Vec::new(),
+            wide_retries: 0,
+            zone_clear: Vec::new(),
+            zone_rules: false,
         }
     }
 }
@@ -157,6 +172,10 @@ pub const RESEED_DIVISOR: usize = 10;
 /// below their minimum area: 371 at the first retry's radii, 363 at the second's, 358 at the
 /// third's (slivers 90, 92, 86), 358 at the fourth's and 375 at the sixth's.
 pub const RESEED_RETRY: usize = 2;
+
+/// A retry at the clear widths ([`CutOptions::wide_retries`]) draws this fraction (one over it)
+/// of a retry's candidates.
+pub const WIDE_DIVISOR: usize = 4;
 
 /// Wall moves [`Prepared::refine`] may make per room of a round.
 pub const REFINE_STEPS: usize = 4;
@@ -310,7 +329,7 @@ impl<'a> Prepared<'a> {
         let field = Field::new(&base, walls);
         let mut widths = vec![0u16; n_labels];
         for &l in &labels {
-            if spec.final_labels.contains(&l) {
+            if opts.zone_rules || spec.final_labels.contains(&l) {
                 let own = opts.widths.get(l as usize).copied().unwrap_or(0);
                 widths[l as usize] =
                     own.max(opts.min_width.unwrap_or(0)).min(u16::MAX as usize) as u16;
@@ -820,18 +839,19 @@ pub fn cut(
     }
     let mut rejected = BTreeMap::new();
     let mut candidates = 0;
-    let finish = |best: Survivor,
-                  retry: Option<usize>,
-                  mut candidates: usize,
-                  mut rejected: BTreeMap<String, usize>| {
-        let (best, moved) = reseeded(&p, best, grid, n_labels, &mut candidates, &mut rejected);
+    let finish_in = |p: &Prepared,
+                     best: Survivor,
+                     retry: Option<usize>,
+                     mut candidates: usize,
+                     mut rejected: BTreeMap<String, usize>| {
+        let (best, moved) = reseeded(p, best, grid, n_labels, &mut candidates, &mut rejected);
         let q;
         let p = match &moved {
             Some(spec) => {
-                q = Prepared::new(grid, walls, spec, opts, n_labels, round);
+                q = Prepared::new(grid, walls, spec, p.opts, n_labels, round);
                 &q
             }
-            None => &p,
+            None => p,
         };
         let (energy, _, grid, feats) = best;
         let (energy, grid, feats) = if opts.refine_walls {
@@ -848,6 +868,9 @@ pub fn cut(
             features: p.labels.iter().copied().zip(feats).collect(),
             energy,
         }
+    };
+    let finish = |best: Survivor, retry, candidates, rejected| {
+        finish_in(&p, best, retry, candidates, rejected)
     };
     // the corridor typology's layouts, finished like any candidate; the best survivor competes
     // with each retry's best by energy
@@ -891,6 +914,32 @@ pub fn cut(
         }
         _ => b,
     };
+    // first, a few retries with every finished room held to its clear width: the rules the
+    // round keeps otherwise are capped (a classroom's at 1.5 m), since holding every round to
+    // the full widths fails many rounds and costs their whole budget
+    if let Some(wide) = widened(&p) {
+        let pw = Prepared::new(grid, walls, spec, &wide, n_labels, round);
+        if cleanup::width_squares_misfit(&pw.region, &pw.labels, &pw.widths).is_none() {
+            let wide_batch = opts.batch.max(1).div_ceil(WIDE_DIVISOR);
+            for j in 0..opts.wide_retries {
+                let radii = pw.radii(j);
+                let best = pw.batch((1 << 21) + j as u64, wide_batch, &mut rejected, |i, rng| {
+                    if j == 0 && i == 0 {
+                        pw.sample_seeds(rng, None)
+                    } else {
+                        pw.sample_seeds(rng, Some(&radii))
+                    }
+                });
+                candidates += wide_batch;
+                if let Some(b) = best.map(with_slab) {
+                    // a slab layout that beat it is finished under the round's own rules
+                    let from_slab = slab.as_ref().is_some_and(|s| s.1 == b.1 && s.0 == b.0);
+                    let at = if from_slab { &p } else { &pw };
+                    return Ok(finish_in(at, b, Some(j), candidates, rejected));
+                }
+            }
+        }
+    }
     let mut kept: Option<(Survivor, usize)> = None;
     for j in 0..opts.retries.max(1) {
         let radii = p.radii(j);
@@ -951,6 +1000,36 @@ pub fn cut(
         opts.fallback_samples,
         reasons.join("; ")
     )))
+}
+
+/// The round's options with each finished room's width rule raised to its clear width
+/// ([`CutOptions::clear`]), but never beyond the side of the square its target area holds; None
+/// when [`CutOptions::wide_retries`] is 0 or no rule would rise.
+fn widened(p: &Prepared) -> Option<CutOptions> {
+    let o = p.opts;
+    if o.wide_retries == 0 || o.clear.is_empty() {
+        return None;
+    }
+    let mut wide = o.clone();
+    let mut raised = false;
+    for (k, &l) in p.labels.iter().enumerate() {
+        let l = l as usize;
+        let side = if p.spec.final_labels.contains(&(l as Label)) {
+            o.clear.get(l).copied().unwrap_or(0)
+        } else {
+            o.zone_clear.get(l).copied().unwrap_or(0)
+        }
+        .min(p.targets[k].max(0.0).sqrt() as usize);
+        if side > p.widths[l] as usize {
+            if wide.widths.len() <= l {
+                wide.widths.resize(l + 1, 0);
+            }
+            wide.widths[l] = wide.widths[l].max(side);
+            raised = true;
+        }
+    }
+    wide.zone_rules = !o.zone_clear.is_empty();
+    raised.then_some(wide)
 }
 
 /// Total shortfall of a round's children: the sum of `1 − area / target` over those below target.
@@ -1241,6 +1320,53 @@ mod tests {
         assert_eq!(judged(vec![0, 2, 3], &short_arm), 0);
         // the leftover counts too, judged at its own width
         assert_eq!(judged(vec![4, 2, 3], &short_arm), 1);
+    }
+
+    #[test]
+    fn wide_retries_hold_rooms_to_their_clear_width_when_a_layout_can() {
+        // a 12 × 6 hall cut into two rooms of 30 cells: grown under a 2-cell rule, the first
+        // keeps a strip 3 cells deep and the second an L around it; held to their clear width
+        // of 5 cells first, they come out side by side, 5 × 6 each
+        let base = parse_rows(&["000000000000"; 6]);
+        let walls = Walls::none(base.w, base.h);
+        let mut spec = round([30.0, 30.0], 12.0);
+        spec.planned = vec![[3.0, 3.5], [8.0, 2.5]];
+        let cut_with = |wide_retries: usize| {
+            let opts = CutOptions {
+                min_width: Some(2),
+                clear: vec![0, 5, 5],
+                wide_retries,
+                ..CutOptions::default()
+            };
+            let out = cut(&base, &walls, &spec, &opts, 3, 0).unwrap();
+            let p = Prepared::new(&base, &walls, &spec, &opts, 3, 0);
+            (narrow_rooms(&p, &out.grid), out)
+        };
+        let (narrow_before, _) = cut_with(0);
+        let (narrow, out) = cut_with(1);
+        assert!(narrow_before > 0, "the test's layout needs the wide retry");
+        assert_eq!(narrow, 0);
+        // the same inputs give the same layout
+        assert_eq!(cut_with(1).1.grid.cells, out.grid.cells);
+        // zones are held to the widest clear width of the rooms they will hold
+        let opts = CutOptions {
+            clear: vec![0, 5, 5],
+            zone_clear: vec![0, 4, 0],
+            wide_retries: 1,
+            ..CutOptions::default()
+        };
+        let mut zoned = spec.clone();
+        zoned.final_labels = vec![0, 2];
+        let p = Prepared::new(&base, &walls, &zoned, &opts, 3, 0);
+        let wide = widened(&p).unwrap();
+        assert_eq!(&wide.widths[..3], &[0, 4, 5]);
+        assert!(wide.zone_rules);
+        // no retries, or no clear widths: the round's own rules
+        let off = CutOptions {
+            wide_retries: 0,
+            ..opts.clone()
+        };
+        assert!(widened(&Prepared::new(&base, &walls, &zoned, &off, 3, 0)).is_none());
     }
 
     #[test]

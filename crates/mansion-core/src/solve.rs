@@ -90,6 +90,8 @@ pub struct SolveOptions {
     /// See [`CutOptions::slabs`].
     #[serde(default)]
     pub slabs: bool,
+    /// See [`CutOptions::wide_retries`].
+    pub wide_retries: usize,
     /// Times a failed round may send the solver back to re-cut an earlier one, per floor
     /// ([`MAX_BACKTRACKS`] by default). A budget in counts, not time, so results stay
     /// deterministic: generated buildings give their strict first attempt a small one, since a
@@ -134,6 +136,7 @@ impl Default for SolveOptions {
             refine_walls: true,
             reseeds: 0,
             slabs: false,
+            wide_retries: 0,
             max_backtracks: MAX_BACKTRACKS,
             strict_backtracks: None,
             repair: false,
@@ -685,6 +688,22 @@ pub fn solve_floor(
             subtree[*p as usize] += s;
         }
     }
+    // a zone's clear width: the widest any room it will hold needs (each capped by the square
+    // its area holds), for the rounds that first try every rule at its clear width
+    let mut zone_clear: Vec<usize> = (0..n)
+        .map(|l| {
+            let holds = (floor.areas[l] / (opts.cell_size * opts.cell_size)).sqrt() as usize;
+            floor.clear.get(l).copied().unwrap_or(0).min(holds)
+        })
+        .collect();
+    for (p, cs) in rounds.iter().rev() {
+        let m = cs
+            .iter()
+            .map(|&c| zone_clear[c as usize])
+            .max()
+            .unwrap_or(0);
+        zone_clear[*p as usize] = zone_clear[*p as usize].max(m);
+    }
     let cut_opts = CutOptions {
         retries: opts.retries.max(1),
         batch: opts.batch.max(1),
@@ -709,6 +728,9 @@ pub fn solve_floor(
         reseeds: opts.reseeds,
         slabs: opts.slabs,
         clear: floor.clear.clone(),
+        wide_retries: opts.wide_retries,
+        zone_clear,
+        zone_rules: false,
     };
     let mut grid = floor.grid.clone();
     let mut exists: Vec<bool> = (0..n)

@@ -122,6 +122,13 @@ class SolverSettings(BaseModel):
       the same cleanup, width and topology filter as grown candidates, must leave each room a
       1.5 m square and each zone no longer than twice its width, and win when their energy is
       lower. False: the paper's cutting node. Generated floors turn it on.
+    - ``wide_retries``: retries each round first spends, at a quarter of a batch each, with the
+      width rules of its rooms raised to their nodes' ``clear_width`` (never beyond the square
+      a room's area holds) and the zones it cuts held to the widest clear width of the rooms
+      they will hold; a round none of them lays out is cut under its own rules as before. The
+      rules a round keeps are capped (``RoomNode.min_width``: 2.0 m, 1.5 m for wider rooms),
+      because holding every round to full widths fails many and costs their whole budget.
+      0: never (the paper's cutting node); generated floors use 1.
     - ``repair``: once every round is cut, rooms left below their node's ``min_area``,
       ``clear_width`` or ``max_aspect`` take a row or a column at a time from neighbours (one
       neighbour, one straight run of it, the whole face across several, or a neighbour that
@@ -176,6 +183,7 @@ class SolverSettings(BaseModel):
     growth: Literal["balanced", "longest"] = "balanced"
     reseeds: int = Field(default=0, ge=0)
     slabs: bool = False
+    wide_retries: int = Field(default=0, ge=0)
     repair: bool = False
     rebalance: bool = False
     keep_first_round: bool = False
