@@ -38,6 +38,7 @@ def test_default_options_match_the_binding_contract() -> None:
         "growth": "balanced",
         "reseeds": 0,
         "slabs": False,
+        "wide_retries": 0,
         "repair": False,
         "rebalance": False,
         "keep_first_round": False,
