@@ -125,10 +125,10 @@ SLABS = True
 #: clear widths and its zones to the widest of their rooms' (``SolverSettings.wide_retries``): a
 #: classroom 5.4 m, a ward 3.2 m, a hospital corridor 2.4 m, where the rules kept otherwise stop
 #: at 1.5-2.0 m. Measured on the offline hundreds, each seed laid out with and without, process
-#: time (seeds 0-99 / 100-199): rooms below their width 273 -> 267 / 290 -> 261, below their area
-#: 15 -> 13 / 30 -> 31, elongated 43 -> 45 / 43 -> 36, slivers 4 -> 4 / 6 -> 4, time 0.96x /
-#: 1.01x (medians per building 1.04x / 1.03x). Two such retries: 258 rooms below their width on
-#: seeds 100-199 for 1.09x the time; a whole batch per retry instead of a quarter, 267 for 1.18x.
+#: time (seeds 0-99 / 100-199): rooms below their width 273 -> 253 / 290 -> 235, below their area
+#: 15 -> 16 / 30 -> 26, slivers 4 -> 3 / 6 -> 3, elongated 43 -> 44 / 43 -> 33, time 0.92x /
+#: 0.97x. Two such retries: 253 / 229 rooms below their width, but 19 below area on the first
+#: hundred; see the README's realism section.
 WIDE_RETRIES = 1
 
 Progress = Callable[[str, int, int], None]
@@ -198,8 +198,9 @@ def _widths_at_most(graph: RoomGraph, width: float | None) -> RoomGraph:
 def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSettings:
     """The solver settings of generated floors: the floor-wide minimum width (``width`` m,
     :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``, :data:`RESEEDS`, each round
-    rebalanced toward its targets, the corridor typology's layouts (:data:`SLABS`) and the repair
-    of rooms left below their design minimums."""
+    rebalanced toward its targets, the corridor typology's layouts (:data:`SLABS`), each round's
+    first retry at its rooms' full clear widths (:data:`WIDE_RETRIES`) and the repair of rooms
+    left below their design minimums."""
     return SolverSettings(
         min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS, repair=True,
         rebalance=True, slabs=SLABS, wide_retries=WIDE_RETRIES,

@@ -122,10 +122,11 @@ class SolverSettings(BaseModel):
       the same cleanup, width and topology filter as grown candidates, must leave each room a
       1.5 m square and each zone no longer than twice its width, and win when their energy is
       lower. False: the paper's cutting node. Generated floors turn it on.
-    - ``wide_retries``: retries each round first spends, at a quarter of a batch each, with the
-      width rules of its rooms raised to their nodes' ``clear_width`` (never beyond the square
-      a room's area holds) and the zones it cuts held to the widest clear width of the rooms
-      they will hold; a round none of them lays out is cut under its own rules as before. The
+    - ``wide_retries``: retries each round first spends, at a quarter of a batch each and the
+      fifth retry's radii (γ = 2 with the default ``gammas``), with the width rules of its
+      rooms raised to their nodes' ``clear_width`` (never beyond the square a room's area
+      holds) and the zones it cuts held to the widest clear width of the rooms they will hold;
+      a round none of them lays out is cut under its own rules as before. The
       rules a round keeps are capped (``RoomNode.min_width``: 2.0 m, 1.5 m for wider rooms),
       because holding every round to full widths fails many and costs their whole budget.
       0: never (the paper's cutting node); generated floors use 1.
