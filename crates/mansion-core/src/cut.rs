@@ -922,9 +922,10 @@ pub fn cut(
         }
         _ => b,
     };
-    // first, a few retries with every finished room held to its clear width: the rules the
-    // round keeps otherwise are capped (a classroom's at 1.5 m), since holding every round to
-    // the full widths fails many rounds and costs their whole budget
+    // first, a few retries with every finished room held to its clear width and every zone to
+    // its rooms' widest: the rules the round keeps otherwise are capped (a classroom's at
+    // 1.5 m), since holding every round to the full widths fails many rounds and costs their
+    // whole budget
     if let Some(wide) = widened(&p) {
         let pw = Prepared::new(grid, walls, spec, &wide, n_labels, round);
         if cleanup::width_squares_misfit(&pw.region, &pw.labels, &pw.widths).is_none() {
@@ -1011,8 +1012,10 @@ pub fn cut(
 }
 
 /// The round's options with each finished room's width rule raised to its clear width
-/// ([`CutOptions::clear`]), but never beyond the side of the square its target area holds; None
-/// when [`CutOptions::wide_retries`] is 0 or no rule would rise.
+/// ([`CutOptions::clear`]) and each zone a later round cuts held to the widest clear width of the
+/// rooms it will hold ([`CutOptions::zone_clear`]), neither beyond the side of the square its
+/// target area holds; None when [`CutOptions::wide_retries`] is 0, the floor has no clear widths
+/// or no rule would rise.
 fn widened(p: &Prepared) -> Option<CutOptions> {
     let o = p.opts;
     if o.wide_retries == 0 || o.clear.is_empty() {
