@@ -177,14 +177,16 @@ def test_repair_and_rebalance_bring_generated_rooms_closer_to_the_table() -> Non
     below the minimum areas at each step, fewer rooms below them with either pass than with
     none, and no more rooms elongated beyond the limit. (One building alone may go either way:
     a rebalanced round hands the next round a different region, which it cuts differently.)
-    No room is left out here (:func:`mansion.building.steps.leave_out`): the passes alone."""
+    No room is left out here (:func:`mansion.building.steps.leave_out`) and no round first tries
+    its rooms' full widths (``wide_retries``, which changes the layouts the passes start from):
+    the passes alone."""
     from mansion.building import steps
 
     def rooms(**update: bool) -> list[tuple[str, Polygon]]:
         settings_of = steps.floor_settings
 
         def patched(cell_size: float, width: float = steps.MIN_CLEAR_WIDTH):  # noqa: ANN202
-            return settings_of(cell_size, width).model_copy(update=update)
+            return settings_of(cell_size, width).model_copy(update={"wide_retries": 0, **update})
 
         mp = pytest.MonkeyPatch()
         mp.setattr(steps, "floor_settings", patched)

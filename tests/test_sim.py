@@ -202,8 +202,12 @@ def test_pick_up_and_put(apartment: Path) -> None:
     fails(env, "PickUp", other.id, reason="hands full")
     table = find(env, lambda i: i.parent is None and i.props.receptacle and not i.props.openable
                  and i.props.object_type in ("Desk", "DiningTable", "CounterTop", "SideTable", "Dresser", "Bed", "TVStand"))
-    if env.distance_to(table.id) <= INTERACT:
-        env.GoToRoom(next(r for r in env.state.rooms if r != table.room and r not in env.state.core_ids))
+    # out of reach: the first other room whose spawn is beyond arm's length of it
+    for room in (r for r in env.state.rooms if r != table.room and r not in env.state.core_ids):
+        if env.distance_to(table.id) > INTERACT:
+            break
+        env.GoToRoom(room)
+    assert env.distance_to(table.id) > INTERACT
     fails(env, "Put", table.id, reason="m away")
     assert env.GoToObject(table.id).success
     # a top taken whole: nowhere to put it
