@@ -273,3 +273,23 @@ def test_grid_inside_test_is_shapelys_on_rectilinear_rooms_and_others() -> None:
             want = shapely.contains_xy(room, gx, gy)
             assert (_inside(room, gx, gy) == want).all(), room.wkt
     assert not _inside(box(0, 0, 2, 2), np.array([[0.0, 1.0, 2.0]]), np.array([[1.0, 1.0, 1.0]]))[0, [0, 2]].any()
+
+
+def test_a_kitchen_too_shallow_for_a_table_for_four_gets_a_table_for_two() -> None:
+    """A galley kitchen 2.0 m deep has no room for a 1.0 m table with chairs on all sides; it is
+    planned a table for two, which the engine places, where a table for four is dropped. A
+    kitchen 3.5 m deep keeps the table for four."""
+    from mansion.placement import offline
+
+    galley = RoomSpec("staff_kitchen", [(0, 0), (4, 0), (4, 2.0), (0, 2.0)], [((0.3, 0.0), (1.2, 0.0))])
+    plan = plan_objects("staff_kitchen", "kitchen", galley.polygon, "office", seed=1)
+    table = next(i for i in plan.items if i.object_type == "DiningTable")
+    chairs = next(i for i in plan.items if i.object_type == "Chair")
+    assert table.max_depth == 0.7 and chairs.count == 2
+    assert "DiningTable" in {o.object_type for o in furnish_room(galley, plan, seed=3).objects}
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(offline, "SMALL_TABLE_BELOW", 0.0)
+        four = plan_objects("staff_kitchen", "kitchen", galley.polygon, "office", seed=1)
+    assert "DiningTable" not in {o.object_type for o in furnish_room(galley, four, seed=3).objects}
+    deep = plan_objects("k", "kitchen", [(0, 0), (5, 0), (5, 3.5), (0, 3.5)], "office", seed=1)
+    assert next(i for i in deep.items if i.object_type == "Chair").count == 4
