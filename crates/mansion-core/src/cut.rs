@@ -774,6 +774,25 @@ impl<'a> Prepared<'a> {
         Xoshiro256PlusPlus::seed_from_u64(h)
     }
 
+    /// One retry's `count` candidates ([`Prepared::batch`] under RNG stream `retry`), seeds
+    /// perturbed within `radii`; with `keep_first`, the first keeps the planned seeds as they are.
+    fn perturbed(
+        &self,
+        retry: u64,
+        count: usize,
+        radii: &[f64],
+        keep_first: bool,
+        rejected: &mut BTreeMap<String, usize>,
+    ) -> Option<Survivor> {
+        self.batch(retry, count, rejected, |i, rng| {
+            if keep_first && i == 0 {
+                self.sample_seeds(rng, None)
+            } else {
+                self.sample_seeds(rng, Some(radii))
+            }
+        })
+    }
+
     /// Run `count` candidates in parallel; seeds come from `seeder`. Returns the best survivor.
     fn batch<F>(
         &self,
@@ -932,13 +951,13 @@ pub fn cut(
             let wide_batch = opts.batch.max(1).div_ceil(WIDE_DIVISOR);
             for j in 0..opts.wide_retries {
                 let radii = pw.radii(j + WIDE_RETRY);
-                let best = pw.batch((1 << 21) + j as u64, wide_batch, &mut rejected, |i, rng| {
-                    if j == 0 && i == 0 {
-                        pw.sample_seeds(rng, None)
-                    } else {
-                        pw.sample_seeds(rng, Some(&radii))
-                    }
-                });
+                let best = pw.perturbed(
+                    (1 << 21) + j as u64,
+                    wide_batch,
+                    &radii,
+                    j == 0,
+                    &mut rejected,
+                );
                 candidates += wide_batch;
                 if let Some(b) = best.map(with_slab) {
                     // a slab layout that beat it is finished under the round's own rules
@@ -952,14 +971,8 @@ pub fn cut(
     let mut kept: Option<(Survivor, usize)> = None;
     for j in 0..opts.retries.max(1) {
         let radii = p.radii(j);
-        let best = p.batch(j as u64, opts.batch.max(1), &mut rejected, |i, rng| {
-            // the first candidate of the first retry keeps the planned seeds unperturbed
-            if j == 0 && i == 0 {
-                p.sample_seeds(rng, None)
-            } else {
-                p.sample_seeds(rng, Some(&radii))
-            }
-        });
+        // the first candidate of the first retry keeps the planned seeds unperturbed
+        let best = p.perturbed(j as u64, opts.batch.max(1), &radii, j == 0, &mut rejected);
         candidates += opts.batch.max(1);
         if let Some(b) = best.map(with_slab) {
             if !opts.exhaustive {
@@ -1127,14 +1140,8 @@ fn reseeded(
         let q = Prepared::new(grid, p.walls, &spec, opts, n_labels, p.round);
         let radii = q.radii(RESEED_RETRY);
         let count = opts.batch.max(1).div_ceil(RESEED_DIVISOR);
-        let found = q.batch((1 << 20) + r as u64, count, rejected, |i, rng| {
-            // the first candidate keeps the moved seed as it is
-            if i == 0 {
-                q.sample_seeds(rng, None)
-            } else {
-                q.sample_seeds(rng, Some(&radii))
-            }
-        });
+        // the first candidate keeps the moved seed as it is
+        let found = q.perturbed((1 << 20) + r as u64, count, &radii, true, rejected);
         *candidates += count;
         match found {
             Some(b)
