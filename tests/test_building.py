@@ -338,9 +338,9 @@ def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> Non
     def unfit(b: Building) -> int:
         return sum(len(steps.unfit_rooms(f.layout.rooms, f.graph)) for f in b.floors if f.copy_of is None)
 
-    b = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=7)
+    b = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=5)
     notes = [r for f in b.floors for r in f.relaxations if " left out" in r]
-    assert notes, "the hospital of seed 7 has a floor too tight for its toilets"
+    assert notes, "the hospital of seed 5 has a floor too tight for its consulting and treatment rooms"
     for f in b.floors:
         ids = {n.id for n in f.graph.nodes}
         for note in f.relaxations:
@@ -349,19 +349,19 @@ def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> Non
                 assert room not in ids and room not in {r.id for r in f.layout.rooms}
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "leave_out", lambda graph, unfit, keep=(): (graph, []))
-        kept = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=7)
+        kept = generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=5)
     assert not [r for f in kept.floors for r in f.relaxations if " left out" in r]
     assert unfit(b) < unfit(kept)
 
 
 def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
     """When the first layout without the rooms left out is refused, another seed is tried: the
-    library of the realism hundred's seed 66 lays a floor out again with one room out only
-    because of that (with one seed, the floor keeps a room below its minimum)."""
+    mall of the second realism hundred's seed 139 lays a floor out again with rooms out only
+    because of that (with one seed, the floor keeps two rooms unfit)."""
     from mansion.building import steps
     from mansion.eval.realism import bench_case
 
-    kind, floors, description = bench_case(66)
+    kind, floors, description = bench_case(139)
 
     def left_out(b: Building) -> list[str]:
         return [r for f in b.floors for r in f.relaxations if " left out" in r]
@@ -370,10 +370,10 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
         # the recut and the merge that follow would mend what either layout leaves unfit
         mp.setattr(steps, "recut_unfit_rooms", lambda layout, *_, **__: (layout, []))
         mp.setattr(steps, "merge_unfit_rooms", lambda layout, graph, *_, **__: (layout, graph, []))
-        b = generate_building(description, building_type=kind, floors=floors, seed=66)
+        b = generate_building(description, building_type=kind, floors=floors, seed=139)
         assert left_out(b)
         mp.setattr(steps, "RESOLVE_SEEDS", 1)
-        once = generate_building(description, building_type=kind, floors=floors, seed=66)
+        once = generate_building(description, building_type=kind, floors=floors, seed=139)
     assert not left_out(once)
 
     def unfit(x: Building) -> int:
@@ -425,13 +425,13 @@ def test_leave_out_never_drops_a_room_the_description_asked_for() -> None:
 
 def test_a_floor_laid_out_again_also_spares_a_room_below_its_width() -> None:
     """A floor laid out again because a room is too small for it is too tight for its rooms
-    below their clear width as well: the two-storey school of the realism hundred's seed 63
-    leaves one of its classrooms out on its upper floor (recorded), and that floor ends with
-    fewer rooms unfit or below their width than when only the rooms too small are spared."""
+    below their clear width as well: the three-storey hospital of the realism hundred's seed 76
+    leaves a room below its width out (recorded), and its floors end with fewer rooms unfit or
+    below their width than when only the rooms too small are spared."""
     from mansion.building import steps
     from mansion.eval.realism import bench_case
 
-    kind, floors, description = bench_case(63)
+    kind, floors, description = bench_case(76)
 
     def defects(b: Building) -> int:
         return sum(
@@ -439,7 +439,7 @@ def test_a_floor_laid_out_again_also_spares_a_room_below_its_width() -> None:
             for f in b.floors if f.copy_of is None
         )
 
-    b = generate_building(description, building_type=kind, floors=floors, seed=63)
+    b = generate_building(description, building_type=kind, floors=floors, seed=76)
     notes = [r for f in b.floors for r in f.relaxations if "narrower than its clear width" in r]
     assert notes and all(" left out" in n for n in notes)
     for f in b.floors:
@@ -449,7 +449,7 @@ def test_a_floor_laid_out_again_also_spares_a_room_below_its_width() -> None:
                 assert room not in {n.id for n in f.graph.nodes} | {r.id for r in f.layout.rooms}
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "SPARE_NARROW", False)
-        only_small = generate_building(description, building_type=kind, floors=floors, seed=63)
+        only_small = generate_building(description, building_type=kind, floors=floors, seed=76)
     assert not [r for f in only_small.floors for r in f.relaxations if "narrower than its clear width" in r]
     assert defects(b) < defects(only_small)
 

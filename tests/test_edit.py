@@ -54,7 +54,7 @@ PAPER = {
 def office(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """Two floors: a lobby with sofas below, a staff kitchen (dining table, fridge) above."""
     root = tmp_path_factory.mktemp("edit-office")
-    b = generate_building("a two-storey office with a staff kitchen on the top floor", floors=2, seed=1)
+    b = generate_building("a two-storey office with a staff kitchen on the top floor", floors=2, seed=4)
     write_scenes(b, root / "scenes")
     return root
 

@@ -314,7 +314,7 @@ def test_grid_adjacencies_are_the_cores(seed: int) -> None:
 
 
 def test_generated_floors_merge_the_rooms_laying_out_again_could_not_mend() -> None:
-    """The mall of the realism hundred's seed 41 lays its toilet lobbies out at 2.2 m² on six
+    """The mall of the realism hundred's seed 41 lays its toilet lobbies out at 2.2 m² on two
     floors, where laying the floor out again does not help: each lobby becomes part of the
     concourse, which the floor records; every room a note names is gone from the graph and the
     layout, and the building passes its checks."""
@@ -324,7 +324,7 @@ def test_generated_floors_merge_the_rooms_laying_out_again_could_not_mend() -> N
     kind, floors, description = bench_case(41)
     b = generate_building(description, building_type=kind, floors=floors, seed=41)
     notes = [(f, r) for f in b.floors for r in f.relaxations if " merged into " in r]
-    assert len(notes) >= 3 and all(n.startswith("toilets merged into concourse") for _, n in notes)
+    assert len(notes) >= 2 and all(n.startswith("toilets merged into concourse") for _, n in notes)
     for f, note in notes:
         gone = note.split(" merged into ")[0]
         assert gone not in {n.id for n in f.graph.nodes} | {r.id for r in f.layout.rooms}

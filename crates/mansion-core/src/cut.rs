@@ -64,6 +64,10 @@ pub fn leftover_round(
     }
 }
 
+/// The bits of a round's stream (`cut`'s `round`) above which the solver counts the round's
+/// re-cuts: `round + (attempt << RECUT_SHIFT)`.
+pub const RECUT_SHIFT: u32 = 40;
+
 /// Sampling and scoring settings of the cutting node.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct CutOptions {
@@ -900,8 +904,13 @@ pub fn cut(
         finish_in(&p, best, retry, candidates, rejected)
     };
     // the corridor typology's layouts, finished like any candidate; the best survivor competes
-    // with each retry's best by energy
-    let slab: Option<Survivor> = if opts.slabs {
+    // with each retry's best by energy. A round cut again because a later round could not be cut
+    // in what it left (a backtrack) does not offer them again: they are the layouts it offered
+    // the first time, and a slab that won then would win again (a mall's toilet cluster left
+    // too narrow by the concourse's slabs, the floor re-cut to the same end until its rules were
+    // lowered to 1 m)
+    let recut = (round >> RECUT_SHIFT) > 0;
+    let slab: Option<Survivor> = if opts.slabs && !recut {
         let mut s = Scratch::new(p.base.cells.len());
         let mut best: Option<Survivor> = None;
         for (i, g) in crate::slab::layouts(&p, &opts.clear)

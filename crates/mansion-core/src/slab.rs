@@ -10,6 +10,12 @@
 //! Slabs are rectangles wherever the region is, as deep as the band beside the corridor and as
 //! wide along it as their area needs. They are candidates like the grown ones: the same cleanup,
 //! width and topology filter and energy decide whether they win ([`crate::cut`]).
+//!
+//! Which side of a single corridor a child goes to is chosen over every split of the children
+//! ([`Frame::split_free`]), not only in their seeds' order across it: a band deeper than a room
+//! needs draws it as a strip along the depth, so the split weighs the strips it makes against
+//! how well the bands' cells match their rooms. Where the region's edge steps in so that a band
+//! is shallower than any room, its cells beside the corridor widen the corridor.
 
 use crate::cut::Prepared;
 use crate::grid::{Grid, Label, EMPTY};
@@ -72,10 +78,17 @@ pub fn layouts(p: &Prepared, clear: &[usize]) -> Vec<Grid> {
             continue;
         }
         let across = frame.across(p, k);
-        let mut single: Vec<(f64, Plan, Vec<usize>)> = Vec::new();
-        let mut double: Vec<(f64, Plan, Vec<usize>)> = Vec::new();
+        let mut single: Vec<(f64, Plan, Vec<Vec<usize>>)> = Vec::new();
+        let mut double: Vec<(f64, Plan, Vec<Vec<usize>>)> = Vec::new();
         for plan in plans(frame.v0, frame.v1, wc) {
-            if let Some((cost, groups)) = frame.split(p, clear, &across, &plan) {
+            let split = if plan.corridors.len() == 1 {
+                frame
+                    .split_free(p, clear, &across, &plan)
+                    .or_else(|| frame.split(p, clear, &across, &plan))
+            } else {
+                frame.split(p, clear, &across, &plan)
+            };
+            if let Some((cost, groups)) = split {
                 let list = if plan.corridors.len() == 1 {
                     &mut single
                 } else {
@@ -92,13 +105,25 @@ pub fn layouts(p: &Prepared, clear: &[usize]) -> Vec<Grid> {
             .take(VARIANTS)
             .chain(double.iter().take(DOUBLE_VARIANTS));
         for (_, plan, groups) in chosen {
-            if let Some(g) = frame.lay(p, clear, parent, wc, &across, plan, groups) {
+            if let Some(g) = frame.lay(p, clear, parent, wc, plan, groups) {
                 out.push(g);
             }
         }
     }
     out
 }
+
+/// Children at most for [`Frame::split_free`] (it tries every split: 2^k).
+const MAX_FREE_SPLIT: usize = 12;
+/// [`Frame::split_free`]'s cost per cell a room lacks of its least columns.
+const STRIP_COST: f64 = 4.0;
+/// [`Frame::split_free`]'s cost per cell of a moved child's seed's distance from its band, per
+/// column of the child.
+const SIDE_COST: f64 = 0.5;
+/// [`Frame::split_free`] wants a zone (cut into rooms by later rounds: a toilet cluster, a ward
+/// wing) no longer than this times its width: a zone as long as [`ZONE_ASPECT`] allows still left
+/// mall toilet clusters 2.5 m wide.
+const FREE_ZONE_ASPECT: f64 = 1.5;
 
 /// Single-corridor positions tried per axis, best matched first: a region's notches leave some
 /// of them with strips the width rules reject.
@@ -236,7 +261,7 @@ impl Frame {
 
     /// The children (in `across` order) split into consecutive groups, one per band, so that the
     /// bands' cells best match the groups' targets (the sum of the mismatches, in cells), each
-    /// band at least as deep as its rooms' clear widths; with the number of children per band.
+    /// band at least as deep as its rooms' clear widths; with the children of each band.
     /// None when no split keeps the depths.
     fn split(
         &self,
@@ -244,7 +269,7 @@ impl Frame {
         clear: &[usize],
         across: &[usize],
         plan: &Plan,
-    ) -> Option<(f64, Vec<usize>)> {
+    ) -> Option<(f64, Vec<Vec<usize>>)> {
         let k = across.len();
         let nb = plan.bands.len();
         let mut sums = vec![0.0; k + 1];
@@ -283,14 +308,109 @@ impl Frame {
         if best[nb][k] == NONE {
             return None;
         }
-        let mut counts = vec![0usize; nb];
+        let mut groups = vec![Vec::new(); nb];
         let mut j = k;
         for b in (0..nb).rev() {
             let i = from[b + 1][j];
-            counts[b] = j - i;
+            groups[b] = across[i..j].to_vec();
             j = i;
         }
-        Some((best[nb][k], counts))
+        Some((best[nb][k], groups))
+    }
+
+    /// The children split between the (at most two) bands of a one-corridor plan in any way, not
+    /// only in their order across the corridor: the split whose bands' cells best match their
+    /// groups' targets, each band at least as deep as its rooms' clear widths, no room drawn as a
+    /// strip narrower than it must be, and few children moved to the side away from their seeds.
+    /// Why: a band deeper than a room needs draws it as a strip along the depth (a toilet cluster
+    /// 1.5 m wide and 11 m deep beside a 10 m band of classrooms, a computer lab 3 m wide), and
+    /// the order across the corridor put it there only because of where its seed fell. Cost, in
+    /// cells: the bands' mismatches, plus [`STRIP_COST`] per cell a room lacks of its least
+    /// columns (its clear width; a zone, which later rounds cut into rooms, also a box no longer
+    /// than [`FREE_ZONE_ASPECT`] times its width), plus [`SIDE_COST`] per cell a moved child's
+    /// seed lies from its band, per column of the child. None when no split keeps the depths, or
+    /// the round has more than [`MAX_FREE_SPLIT`] children (then [`Frame::split`]).
+    fn split_free(
+        &self,
+        p: &Prepared,
+        clear: &[usize],
+        across: &[usize],
+        plan: &Plan,
+    ) -> Option<(f64, Vec<Vec<usize>>)> {
+        let k = across.len();
+        let nb = plan.bands.len();
+        if nb > 2 || k > MAX_FREE_SPLIT || k == 0 {
+            return None;
+        }
+        let caps: Vec<f64> = plan
+            .bands
+            .iter()
+            .map(|&(a, z)| self.cells(a, z) as f64)
+            .collect();
+        // the columns each child needs at least in a band `d` rows deep
+        let need = |i: usize, d: usize| -> f64 {
+            let l = p.labels[i];
+            let mut n = least(p, clear, i).max(USABLE) as f64;
+            if !p.spec.final_labels.contains(&l) {
+                n = n
+                    .max(d as f64 / FREE_ZONE_ASPECT)
+                    .max((p.targets[i] / FREE_ZONE_ASPECT).sqrt());
+            }
+            n
+        };
+        // how far a child's seed lies outside band `b`, in cells
+        let off = |i: usize, b: usize| -> f64 {
+            let (a, z) = plan.bands[b];
+            let v = self.seed(p, i).1;
+            if v < a as f64 {
+                a as f64 - v
+            } else if v > z as f64 {
+                v - z as f64
+            } else {
+                0.0
+            }
+        };
+        let mut best: Option<(f64, u32)> = None;
+        let masks: u32 = if nb == 1 { 1 } else { 1 << k };
+        'mask: for mask in 0..masks {
+            let mut cost = 0.0;
+            for (b, &(a, z)) in plan.bands.iter().enumerate() {
+                let depth = z - a;
+                let group: Vec<usize> = (0..k)
+                    .filter(|&i| (nb == 1) || ((mask >> i) & 1) as usize == b)
+                    .collect();
+                if group.is_empty() {
+                    cost += caps[b];
+                    continue;
+                }
+                let deep = group.iter().map(|&i| least(p, clear, i)).max().unwrap_or(0);
+                if depth < deep.max(MIN_DEPTH) {
+                    continue 'mask;
+                }
+                let total: f64 = group.iter().map(|&i| p.targets[i]).sum();
+                cost += (total - caps[b]).abs();
+                let length = caps[b] / depth as f64;
+                for &i in &group {
+                    let cols = length * p.targets[i] / total.max(1e-9);
+                    cost += STRIP_COST * (need(i, depth) - cols).max(0.0) * depth as f64;
+                    cost += SIDE_COST * off(i, b) * (p.targets[i] / depth as f64);
+                }
+            }
+            if best.is_none_or(|(c, _)| cost < c) {
+                best = Some((cost, mask));
+            }
+        }
+        let (cost, mask) = best?;
+        let mut groups = vec![Vec::new(); nb];
+        for &i in across {
+            let b = if nb == 1 {
+                0
+            } else {
+                ((mask >> i) & 1) as usize
+            };
+            groups[b].push(i);
+        }
+        Some((cost, groups))
     }
 
     /// Lay out one plan.
@@ -301,9 +421,8 @@ impl Frame {
         clear: &[usize],
         parent: Label,
         wc: usize,
-        across: &[usize],
         plan: &Plan,
-        counts: &[usize],
+        groups: &[Vec<usize>],
     ) -> Option<Grid> {
         let (axis, w, u0, u1) = (self.axis, self.w, self.u0, self.u1);
         let mut grid = p.base.clone();
@@ -471,10 +590,7 @@ impl Frame {
         }
         // each band: its children along the corridor by their seeds, each a run of whole columns
         // holding its share of the band's cells
-        let mut next = 0;
-        for (&(a, b), &n) in plan.bands.iter().zip(counts) {
-            let rooms = &across[next..next + n];
-            next += n;
+        for (&(a, b), rooms) in plan.bands.iter().zip(groups) {
             if rooms.is_empty() {
                 continue;
             }
@@ -483,6 +599,31 @@ impl Frame {
                 let (u, v) = axis.uv(c, w);
                 if v >= a && v < b && grid.cells[c] == EMPTY {
                     cols[u - u0] += 1;
+                }
+            }
+            // where the region's edge steps in, the band may be shallower than any room: its
+            // cells beside the corridor widen the corridor there instead of giving the room an
+            // arm a metre wide along it
+            for u in u0..=u1 {
+                let n = cols[u - u0];
+                if n == 0 || n >= MIN_DEPTH {
+                    continue;
+                }
+                let cells: Vec<usize> = (a..b)
+                    .map(|v| self.cell(u, v))
+                    .filter(|&c| open[c] && grid.cells[c] == EMPTY)
+                    .collect();
+                let beside = cells.iter().any(|&c| {
+                    p.region
+                        .neighbours(c)
+                        .iter()
+                        .any(|&q| grid.cells[q] == parent)
+                });
+                if beside {
+                    for c in cells {
+                        grid.cells[c] = parent;
+                    }
+                    cols[u - u0] = 0;
                 }
             }
             let mut order: Vec<usize> = rooms.to_vec();
@@ -720,7 +861,8 @@ fn columns(
         cum += cols[u] as f64;
         run += 1;
     }
-    (j + 1 == order.len()).then_some(owner)
+    // the last room holds what is left, which must reach its width rule too
+    (j + 1 == order.len() && run >= min_cols(order[j])).then_some(owner)
 }
 
 #[cfg(test)]
@@ -845,6 +987,44 @@ mod tests {
     }
 
     #[test]
+    fn a_band_shallower_than_a_room_beside_the_corridor_widens_the_corridor() {
+        // the wing with its south-east corner cut away (outside): south of a corridor at rows
+        // 8..11 the band is 7 rows deep for x < 17 and 2 rows deep beyond
+        let (mut grid, spec) = wing();
+        for y in 1..=5 {
+            for x in 17..=21 {
+                grid.cells[y * grid.w + x] = OUTSIDE;
+            }
+        }
+        let walls = Walls::none(grid.w, grid.h);
+        let opts = options(true);
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        let frame = Frame::of(&p, 0, Axis::X).expect("a frame");
+        let (v0, v1) = (frame.v0, frame.v1);
+        let plan = Plan {
+            corridors: vec![v0 + 7],
+            bands: vec![(v0, v0 + 7), (v0 + 10, v1 + 1)],
+            cross: None,
+        };
+        let groups = vec![vec![0, 1], vec![2, 3]];
+        let g = frame
+            .lay(&p, &opts.clear, 0, 3, &plan, &groups)
+            .expect("laid out");
+        // the two rows beside the corridor under the cut-away corner are corridor, not an arm of
+        // the room along it
+        for y in 6..=7 {
+            for x in 17..=21 {
+                assert_eq!(g.cells[y * g.w + x], 0, "cell ({x}, {y})");
+            }
+        }
+        // and the rooms of that band stop where it is deep enough for them
+        for l in 1..=2 {
+            let (_, (_, y0, x1, _)) = extent(&g, l);
+            assert!(x1 < 17 || y0 >= 8, "room {l} reaches x = {x1}");
+        }
+    }
+
+    #[test]
     fn slabs_on_a_wing_lower_the_energy_and_are_repeatable() {
         let (grid, spec) = wing();
         let walls = Walls::none(grid.w, grid.h);
@@ -864,6 +1044,21 @@ mod tests {
         }
         let again = cut(&grid, &walls, &spec, &options(true), 6, 0).expect("again");
         assert_eq!(again.grid.cells, slab.grid.cells);
+    }
+
+    #[test]
+    fn a_round_cut_again_after_a_backtrack_offers_no_slabs() {
+        // the wing's slab layout wins its first cut; cut again (the solver's second attempt at
+        // the round), the round gets what its grown candidates give, as without slabs
+        let (grid, spec) = wing();
+        let walls = Walls::none(grid.w, grid.h);
+        let again = 1u64 << crate::cut::RECUT_SHIFT;
+        let with = cut(&grid, &walls, &spec, &options(true), 6, again).expect("with slabs");
+        let without = cut(&grid, &walls, &spec, &options(false), 6, again).expect("grown");
+        assert_eq!(with.grid.cells, without.grid.cells);
+        let first = cut(&grid, &walls, &spec, &options(true), 6, 0).expect("first");
+        let grown = cut(&grid, &walls, &spec, &options(false), 6, 0).expect("first grown");
+        assert_ne!(first.grid.cells, grown.grid.cells);
     }
 
     #[test]
@@ -920,10 +1115,16 @@ mod tests {
             bands: vec![(v0, v0 + 5), (v0 + 8, v1 + 1)],
             cross: None,
         };
-        let (cost, counts) = frame
+        let (cost, groups) = frame
             .split(&p, &opts.clear, &across, &plan)
             .expect("a split");
-        assert_eq!(counts, vec![2, 2]);
+        assert_eq!(groups, vec![vec![0, 1], vec![2, 3]]);
+        assert_eq!(cost, 0.0);
+        // the free split agrees where the seeds' order is right: no room a strip, none moved
+        let (cost, groups) = frame
+            .split_free(&p, &opts.clear, &across, &plan)
+            .expect("a free split");
+        assert_eq!(groups, vec![vec![0, 1], vec![2, 3]]);
         assert_eq!(cost, 0.0);
         // bands shallower than the rooms' clear width (4 cells) hold none of them
         let shallow = Plan {
@@ -931,10 +1132,55 @@ mod tests {
             bands: vec![(v0, v0 + 3), (v0 + 6, v1 + 1)],
             cross: None,
         };
-        let (_, counts) = frame
+        let (_, groups) = frame
             .split(&p, &opts.clear, &across, &shallow)
             .expect("a split");
-        assert_eq!(counts, vec![0, 4]);
+        assert_eq!(groups, vec![vec![], vec![0, 1, 2, 3]]);
+    }
+
+    #[test]
+    fn a_free_split_keeps_a_small_room_out_of_a_band_too_deep_for_it() {
+        // The wing's 13 rows: a corridor at rows 3..6 leaves a band 3 rows deep (60 cells) on the
+        // south side and one 7 rows deep (140 cells) on the north. Rooms of 60 (south seed), 10
+        // (seeded just north of the corridor), 60 and 60 cells (north), each 3 cells wide at
+        // least.
+        let (grid, mut spec) = wing();
+        for (g, t) in spec.growers.iter_mut().zip([60.0, 10.0, 60.0, 60.0]) {
+            g.target = t;
+        }
+        spec.planned = vec![[10.0, 2.0], [10.0, 8.0], [6.0, 11.0], [17.0, 11.0]];
+        let walls = Walls::none(grid.w, grid.h);
+        let mut opts = options(true);
+        opts.clear = vec![0, 3, 3, 3, 3, 0];
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        let frame = Frame::of(&p, 0, Axis::X).expect("a frame");
+        let across = frame.across(&p, 4);
+        let (v0, v1) = (frame.v0, frame.v1);
+        let plan = Plan {
+            corridors: vec![v0 + 3],
+            bands: vec![(v0, v0 + 3), (v0 + 6, v1 + 1)],
+            cross: None,
+        };
+        // the columns the small room (child 1) gets in its band
+        let columns_of = |groups: &[Vec<usize>]| {
+            let b = groups.iter().position(|g| g.contains(&1)).expect("placed");
+            let (a, z) = plan.bands[b];
+            let total: f64 = groups[b].iter().map(|&i| p.targets[i]).sum();
+            frame.cells(a, z) as f64 / (z - a) as f64 * p.targets[1] / total
+        };
+        // in order across, the bands match the targets best with the small room among the two
+        // large ones on the north: a strip 1.5 columns wide, 7 rows deep
+        let (_, ordered) = frame
+            .split(&p, &opts.clear, &across, &plan)
+            .expect("a split");
+        assert_eq!(ordered, vec![vec![0], vec![1, 2, 3]]);
+        assert!(columns_of(&ordered) < 2.0);
+        // freely, it goes south beside the first room, about 3 columns wide
+        let (_, free) = frame
+            .split_free(&p, &opts.clear, &across, &plan)
+            .expect("a free split");
+        assert_eq!(free, vec![vec![0, 1], vec![2, 3]]);
+        assert!(columns_of(&free) >= 2.8, "{}", columns_of(&free));
     }
 
     #[test]

@@ -919,7 +919,7 @@ pub fn solve_floor(
             },
             names: floor.names.clone(),
         };
-        let stream = t as u64 + (attempts[t] << 40);
+        let stream = t as u64 + (attempts[t] << cut::RECUT_SHIFT);
         let result = match cut::cut(&grid, &floor.walls, &spec, &cut_opts, n, stream) {
             Ok(o) => Ok(o),
             // When the leftover cannot serve as the parent, let the parent grow from the deepest
