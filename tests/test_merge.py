@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from mansion.building import check_building
 from mansion.building.checks import check_graph
 from mansion.building.merge import grid_adjacencies, merge_unfit_rooms
 from mansion.building.steps import unfit_rooms
@@ -314,22 +315,33 @@ def test_grid_adjacencies_are_the_cores(seed: int) -> None:
 
 
 def test_generated_floors_merge_the_rooms_laying_out_again_could_not_mend() -> None:
-    """The mall of the realism hundred's seed 41 lays its toilet lobbies out at 2.2 m² on two
-    floors, where laying the floor out again does not help: each lobby becomes part of the
-    concourse, which the floor records; every room a note names is gone from the graph and the
-    layout, and the building passes its checks."""
+    """Buildings of the realism hundreds lay rooms out below their minimum where laying the
+    floor out again does not help (an office's floors carry walls and are never laid out again;
+    a hotel's or a hospital's floor may be too tight): such a room becomes part of a neighbour,
+    which the floor records. Every room a note names is gone from the graph and the layout, the
+    room that took it in is not below its minimum area, and the building passes its checks.
+    The first of a few buildings that merged rooms when this was written is used: which floors
+    merge changes with every change to the layout."""
     from mansion.building import generate_building, steps
     from mansion.eval.realism import bench_case
 
-    kind, floors, description = bench_case(41)
-    b = generate_building(description, building_type=kind, floors=floors, seed=41)
-    notes = [(f, r) for f in b.floors for r in f.relaxations if " merged into " in r]
-    assert len(notes) >= 2 and all(n.startswith("toilets merged into concourse") for _, n in notes)
+    for seed in (61, 54, 68, 90, 160):
+        kind, floors, description = bench_case(seed)
+        b = generate_building(description, building_type=kind, floors=floors, seed=seed)
+        notes = [(f, r) for f in b.floors for r in f.relaxations if " merged into " in r]
+        if notes:
+            break
+    else:
+        raise AssertionError("none of the buildings merged a room")
     for f, note in notes:
-        gone = note.split(" merged into ")[0]
+        gone, rest = note.split(" merged into ")
+        stays = rest.split(" ")[0]
         assert gone not in {n.id for n in f.graph.nodes} | {r.id for r in f.layout.rooms}
-    assert not [r for f in b.floors if f.copy_of is None for r in steps.unfit_rooms(f.layout.rooms, f.graph)
-                if r.startswith("toilets")]
+        assert stays in {r.id for r in f.layout.rooms}
+        if f.copy_of is None:
+            # the room that took it in holds both rooms' floor: not below its minimum area
+            assert "below its" not in steps.unfit_rooms(f.layout.rooms, f.graph).get(stays, "")
+    check_building(b)
 
 
 def test_a_room_no_merge_takes_is_dropped_into_its_open_office_never_into_a_smaller_kind() -> None:
