@@ -161,8 +161,15 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\b(right\s*side|rightside)\b", " right side "),
     (r"\bright\s+(?=next|by|beside|above|below|behind|at|in|on|off|outside|near)", " "),
     (r"\bdog\s*leg\b", " "),
+    # "South est corner": "est" is no word of its own after a compass word
+    (r"\b(north|south)\s*-?\s*est\b", r"\1 east"),
+    # "Location: Common room 1 is on ...", "Size: It is ...": a heading before a sentence is no
+    # part of it (left there, it hides the room that opens the sentence)
+    (r"(^|[.;!?\n]\s*)(?:location|position|placement|relationships?|relations?|size|dimensions?|measurements?|area|sides|adjacency|orientation)\s*:", r"\1 "),
     # "the kitchen near room as the balcony", "kitchen opposite as the bedroom": the room named after "as"
     (r"\b(near|opposite|next\s+to|adjacent\s+to)\s+(?:the\s+)?(?:rooms?\s+)?as\b", r"\1"),
+    # "the master room in front room as the bathroom": in front of the bathroom
+    (r"\bin\s+front\s+(?:of\s+)?(?:the\s+)?(?:rooms?\s+)?as\b", "in front of"),
 )
 
 _DIR_WORD = {
@@ -202,6 +209,18 @@ def _directions(text: str) -> str:
     screen = {"upper": "north", "top": "north", "lower": "south", "bottom": "south", "left": "west", "right": "east"}
     text = _SCREEN.sub(lambda m: f" D:{screen[m.group(1)]} ", text)
     text = re.sub(r"\bcentre\b", " D:centre ", text)
+    # "in the back of the house", "the front part of the plan": as drawn, the entrance at the
+    # bottom (the front, south) and the back at the top (north), as left and right are west and east
+    text = re.sub(
+        r"\b(front|back|rear)(?=(?:\s+(?:side|part|portion|end|area|section|half))?\s+of\s+(?:the\s+)?" + _PLACE + r")",
+        lambda m: " D:south " if m.group(1) == "front" else " D:north ", text,
+    )
+    # "below it is the R1", "R1 is directly above it": the side of the room "it" is (read as
+    # "D:north of it" is)
+    text = re.sub(
+        r"\b(above|below|beneath|under|underneath)\s+it\b(?!')",
+        lambda m: f" to the D:{'north' if m.group(1) == 'above' else 'south'} of it ", text,
+    )
     # "with the R1 on below", "R1 on above": a side named by a preposition standing alone
     text = re.sub(
         r"\b(on|at|to)\s+(?:the\s+)?(above|below|beneath|under|underneath)\b(?!\s*(?:of\b|the\b|its?\b|R\d))",
@@ -223,8 +242,11 @@ _NOT_TYPOS = frozenset({"enter", "centered", "matter", "mister", "later", "comma
 
 def _fold_spelling(text: str) -> str:
     """Fold misspelt room words to their spelling (rapidfuzz ratio ≥ 85, words of five letters
-    or more that are not themselves room words or common look-alikes)."""
+    or more that are not themselves room words or common look-alikes; or, from six letters, one
+    edit away with the first letter right: "livign", "comman", "commom", which the ratio of a
+    short word puts under 85)."""
     from rapidfuzz import fuzz, process
+    from rapidfuzz.distance import OSA
 
     choices = list(_SPELLING)
 
@@ -233,6 +255,8 @@ def _fold_spelling(text: str) -> str:
         if len(word) < 5 or word in _SPELLING or word in _NOT_TYPOS or word.endswith("s"):
             return word
         best = process.extractOne(word, choices, scorer=fuzz.ratio, score_cutoff=85)
+        if best is None and len(word) >= 6:
+            best = next(((c, 0, 0) for c in choices if c[0] == word[0] and OSA.distance(word, c) <= 1), None)
         return _SPELLING[best[0]] if best else word
 
     return re.sub(r"[a-z]+", fold, text)
@@ -377,6 +401,16 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         return f" R{len(mentions) - 1} "
 
     tokens = lex.pattern.sub(mention, norm)
+
+    # "common room 1 and 2", "balcony 1&2": the second number names the type's other room
+    def numbered(m: re.Match[str]) -> str:
+        first = mentions[int(m.group(1))]
+        if first.number is None:
+            return m.group(0)
+        mentions.append(RoomMention(first.room_type, int(m.group(3)), f"{first.words} {m.group(2)} {m.group(3)}"))
+        return f"R{m.group(1)} {m.group(2)} R{len(mentions) - 1} "
+
+    tokens = re.sub(r"R(\d+)\s*(and|&|,)\s*(\d)\b(?!\s*(?:'|\"|feet|foot|ft\b|x\b|by\b|m\b|sq|square|%|\.\d|/))", numbered, tokens)
     # "Balcony Room", "com Room", "common room1 Room": the word room after a room's name is part of it
     tokens = re.sub(r"(R\d+)\s*rooms?\b", r"\1", tokens)
     # "R1 and R2 between the room as R3": R3 is between R1 and R2; "R3 is between the room as R1 and R2"
@@ -428,12 +462,16 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
             else:
                 # "Measuring about 10x10 ft, the common room is located ...": a room named with
                 # a placing verb after a leading phrase is the subject too
+                # ("The size of the R2 is 12 by 6 feet": a sentence about a measure of a room
+                # is about that room)
                 later = re.search(
                     r"(?:^|,\s*|\bthe\s+)R(\d+)\s+(?:is|are)\s+(?:located|situated|positioned|placed|found|in|on|at)\b"
-                    r"|\blocation\s+of\s+(?:the\s+)?R(\d+)", piece
+                    r"|\b(?:location|direction|position|placement)\s+of\s+(?:the\s+)?R(\d+)"
+                    r"|^\s*(?:the\s+)?(?:[a-z]+\s+)?(?:size|area|dimensions?|measurements?)\s+of\s+(?:the\s+)?R(\d+)\s+(?:is|are|was|measures)\b(?!\s+(?:the\s+)?R\d)",
+                    piece,
                 )
                 if later:
-                    subject = int(later.group(1) or later.group(2))
+                    subject = int(later.group(1) or later.group(2) or later.group(3))
             piece = _of_it(piece, subject, before)
             clauses.append(_Clause(piece, piece, subject))
         # "The master is on the east side with the living room at the northwest corner. It is
@@ -458,7 +496,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
 
 #: Words after which a room name continues the clause rather than opening a new description.
 _LINKS = frozenset(
-    "of to with and by between from near beside behind than as or nor the a an its their his her "
+    "of off to with and by between from near beside behind inside within outside than as or nor the a an its their his her "
     "into onto toward towards through via is are was were leads opens faces facing overlooks "
     "adjacent adjoining next nearby connects connected accessed accessible entrance bordered "
     "neighbored neighboured followed after before above below under over upside downside , "
@@ -471,13 +509,12 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
     """Split a sentence at rooms that open a new description after a size ("... 10*4 feet R3
     at ..."), the mark of descriptions written without full stops, and at a list of other rooms
     ("with the R1 at the D:northwest corner"); each piece with whether it came from such a list."""
-    cuts = [m.start(2) for m in re.finditer(r"(\w+(?:'|\")?)\s+((?:the\s+)?R\d+\s+(?:it'?s\s+|it\s+is\s+)?(?:is|at|in|on|located|location|lies|D:))", sentence)
-            if m.group(1) not in _LINKS and not re.fullmatch(r"R\d+", m.group(1))
-        # "is in the R1's D:southwest corner": a part of another room, not a new description
-        and not (m.group(1) in ("in", "at", "on", "into", "inside", "within")
-                 and re.match(r"(?:the\s+)?R\d+(?:\s*'?s|\s+rooms?)?\s+D:\w+\s+" + _OWN_PART, m.group(2) + sentence[m.end(2):]))
-        # "the 11x5 bathroom is ...": a size in front of the room is not the end of a description
-        and not re.search(r"\b(?:the|a|an)\s+[\d.x*'\"]+\s*$", sentence[: m.start(2)])]
+    cuts = [m.start() for m in re.finditer(r"(?:\bthe\s+)?R\d+", sentence) if _opens_at(sentence, m.start())]
+    # "... 8 x 8 sq ft D:north facing R4 is located ...": the facing word opens R4's description
+    for m in re.finditer(r"(?:\bthe\s+)?(?:D:\w+\s+)+facing\s+(?:the\s+)?(R\d+)\b", sentence):
+        prev = re.search(r"(\w+)\s*$", sentence[: m.start()])
+        if prev and prev.group(1) not in _LINKS and _OPENS.match(sentence[m.start(1):]):
+            cuts = [c for c in cuts if c != m.start(1)] + [m.start()]
     # a request's list of rooms: "a clinic with a pharmacy on the east side, and a cafe in ..."
     listed = {m.start() for m in re.finditer(r"(?:\bwith|,\s*(?:and|plus)?|\band)\s+(?=(?:an?|one)\s+R\d|the\s+R\d+\s+(?:in|on|at|along|occupies|takes)\s+(?:the\s+)?(?:D:\w+\s+)+(?:corner|(?:side|part|end|wing)\s+of\s+the\s+" + _PLACE + r"))", sentence)}
     listed -= set(cuts)
@@ -490,6 +527,49 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
         start, was_list = c, c in listed
     pieces.append((sentence[start:], was_list))
     return [(p, flag) for p, flag in pieces if p.strip()]
+
+
+#: A room that opens a description: "R3 is ...", "R3 was locate(d) ...", "R3 at ...", "R3 D:north
+#: ...", "R3 measures ...", "R3: D:north side ..." (a room named as a label).
+_OPENS = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:it'?s\s+|it\s+is\s+)?(?:is|was|at|in|on|located|locate|location|lies|sits|measures|measuring|D:)|\s*:(?!\s*\d))")
+#: Openers no list of rooms goes on with: "..., R6 measures about", "R6: D:north side".
+_OPENS_STRONGLY = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:measures|measuring)\b|\s*:(?!\s*\d))")
+#: Openers that place the room: after another room's name they still start a new description
+#: ("... near the R5 the R1 is D:west side ...", "between R2 and R3 R4 is located ...").
+_OPENS_PLACING = re.compile(
+    r"(?:the\s+R\d+\s+(?:is|at|in|on|located|lies|D:)|R\d+\s+(?:(?:is|are)\s+(?:located|situated|placed|positioned|in|at|on|D:)|located|situated))"
+)
+
+
+def _opens_at(sentence: str, start: int) -> bool:
+    """Does the room named at ``start`` open a new description in a run-on sentence? It does when
+    an opener follows it (:data:`_OPENS`) and the word before it ends the previous description
+    (a size, a room's name before a placing verb, a comma before "measures"), not when that word
+    links the room into the clause ("next to the R1 is", "R1 and R2 are")."""
+    rest = sentence[start:]
+    if not _OPENS.match(rest):
+        return False
+    head = sentence[:start].rstrip()
+    prev = re.search(r"(R\d+|[\w.]+(?:'|\")?|,)$", head)
+    if prev is None:
+        return False
+    word = prev.group(1)
+    if word == ",":
+        # "Located on the D:north end of the R5, R0 measures ...": a leading phrase about R0
+        leading = re.match(r"\s*(?:[a-z]+ing|located|situated|placed|positioned|set|tucked)\b[^,]*,$", head)
+        return bool(_OPENS_STRONGLY.match(rest)) and leading is None
+    if re.fullmatch(r"R\d+", word):
+        return bool(_OPENS_PLACING.match(rest) or _OPENS_STRONGLY.match(rest))
+    # "It's roughly 8ft by R2 is in ...": a size left unfinished ends the description
+    if word in ("by", "x") and re.search(r"\d\s*(?:'|ft|feet|foot|m)?\s+(?:by|x)$", head):
+        return True
+    if word in _LINKS:
+        return False
+    # "is in the R1's D:southwest corner": a part of another room, not a new description
+    if word in ("in", "at", "on", "into", "inside", "within") and re.match(r"(?:the\s+)?R\d+(?:\s*'?s|\s+rooms?)?\s+D:\w+\s+" + _OWN_PART, rest):
+        return False
+    # "the 11x5 bathroom is ...": a size in front of the room is not the end of a description
+    return not re.search(r"\b(?:the|a|an)\s+[\d.x*'\"]+\s*$", head)
 
 
 def _of_it(piece: str, subject: int | None, before: int | None) -> str:
@@ -521,8 +601,11 @@ def _of_it(piece: str, subject: int | None, before: int | None) -> str:
 def _opens_description(rest: str) -> bool:
     # A room opening a sentence is its subject ("R2 is ...", "R2 resides ...", "R2 D:south
     # direction"), unless it starts a list or a relation to the previous subject ("R2 and R3 are
-    # to the west", "R2 to the north").
-    return not re.match(r"\s*(?:and|&|,|or|as\s+well|to\s+the|to\s+its|on\s+its|is\s+to\s+(?:the|its)\s+D:\w+\b(?!\s+(?:side\s+|part\s+)?(?:of|from)\b)|are\b)", rest)
+    # to the west", "R2 to the north"); "R2, measuring 80 sq ft, is ..." and "R2 or office is ..."
+    # open a description.
+    if re.match(r"\s*,\s*(?:measuring|being|located|situated|which|approximately|about|roughly|around)\b", rest):
+        return True
+    return not re.match(r"\s*(?:and|&|,|or(?=\s+(?:the\s+|a\s+|an\s+)?R\d)|as\s+well|to\s+the|to\s+its|on\s+its|is\s+to\s+(?:the|its)\s+D:\w+\b(?!\s+(?:side\s+|part\s+)?(?:of|from)\b)|are\b)", rest)
 
 
 def _is_filler(text: str) -> bool:
@@ -589,10 +672,13 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             used.append((m.start(), m.end()))
             out.extend(Statement(subject=o, kind="position", direction=m.group(2), text=_plain(m.group(0), mentions)) for o in others)
     # 1. "between R1 and R2"
-    for m in re.finditer(r"\b(?:in\s+)?between\s+(?:the\s+)?(" + _ROOMS + ")", text):
+    for m in re.finditer(r"\b(?:in\s+)?between\s+(?:of\s+|in\s+)?(?:the\s+)?(" + _ROOMS + ")", text):
         others = rooms_in(m.group(1))
         if others and free(m.start(), m.end()):
-            add("relation", m, relation="between" if len(others) > 1 else "next_to", others=others)
+            # "R0 has a R1 on its D:north side, in between of R2 and R3": said of R1
+            had = re.search(r"\b(?:has|have|contains|includes)\s+(?:a|an|the|one)?\s*R(\d+)\b[^R]*$", text[: m.start()])
+            who = mentions[int(had.group(1))] if had and int(had.group(1)) != clause.subject else None
+            add("relation", m, subject=who, relation="between" if len(others) > 1 else "next_to", others=tuple(o for o in others if o is not who))
 
     # 2. The subject relative to another room: "D:west of R1", "to the D:north of R1",
     # "on D:east side of R1", "D:upside of R1", "above R1", "R1's D:north side".
@@ -634,6 +720,15 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     for m in re.finditer(pat_after, text):
         others = rooms_in(m.group(1))
         if not others or not free(m.start(), m.end()):
+            continue
+        # "next to the R1 on the D:south end of the plan": a part of the plan, where the subject
+        # is (unless R1 was listed, "with the R1 in the D:north part of the house", or is the
+        # subject of its own verb, "R1 is in the D:northwest corner of the plan")
+        if (
+            re.match(r"(?:\s+" + _PART + r")?\s+(?:of|in)\s+(?:the\s+)?" + _PLACE, text[m.end():])
+            and not re.search(r"\bwith\s+(?:the\s+|a\s+|an\s+)?$", text[: m.start()])
+            and not re.search(r"\b(?:is|are|lies|lie|sits|located|situated)\b", m.group(0))
+        ):
             continue
         # "R1 D:north D:corner" style clauses (a room then a position of the plan) are positions
         # of the plan when followed by "of the house": the negative look-ahead handled "of".
@@ -685,6 +780,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     # 5. Other adjacency words: next to, near, adjacent, beside, across from, opposite, facing.
     adjacency = (
         r"\b(next\s+to|nearby|near\s+by|near\s+to|near|adjacent\s+to|adjacent|adjoining|adjoined\s+by|adjoins|beside|by\s+the\s+side\s+of|"
+        r"off(?:\s+of)?|inside(?:\s+of)?|within|"
         r"bordered\s+by|borders|neighbou?red\s+by|shares\s+(?:a\s+)?walls?\s+with|conn?ects?\s+(?:to|with)|conn?ected\s+(?:to|with)|"
         r"attached\s+to|access(?:ed|ible)?\s+(?:from|through|via|by)|touching|opens?\s+(?:in)?to|entrance\s+from|accessible\s+from|"
         r"leads?\s+(?:in)?to|surrounded\s+by|joined\s+to|joins|touches|meets|along\s+with|after|en\s*suite\s+to|"
@@ -707,7 +803,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     #   corner", "extensions to the D:west and D:east": where its notches or bays are.
     for pattern in (
         r"(?:\b(?:from|running|runs|run|runing|oriented|extends?|extending|stretch(?:es|ing)?|goes|going|spans?|spanning)\s+(?:\w+\s+){0,2}?)"
-        r"D:\w+\s*(?:to|-|through|towards?)\s*(?:the\s+)?D:\w+",
+        r"D:\w+\s*(?:to|-|/|through|towards?)\s*(?:the\s+)?D:\w+",
         r"\b(?:its|it's|their|his|her)\s+(?:own\s+)?" + _DD + r"\s+" + _OWN_PART,
         r"\b(?:(?:small|little|tiny|narrow)\s+(?:portions?|parts?|spaces?|areas?|sections?)|extensions?|alcoves?|nooks?"
         r"|knock\s*outs?|notch(?:es)?|cut\s*outs?)\b"
@@ -726,10 +822,19 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     for m in re.finditer(r"D:(\w+)", rest_text):
         d = m.group(1)
         before = rest_text[max(0, m.start() - 40) : m.start()]
-        after = rest_text[m.end() : m.end() + 40]
+        after = rest_text[m.end() : m.end() + 80]
         # facing/entrance words say where a door or window looks, which is the room's side too;
         # "D:south wall" alone (no exterior word) is a wall of the room, not its position.
-        if re.match(r"\s+(?:wall|walls|door|entrance|entry|window)\b", after) and not re.match(r"\s+wall\s+of\s+(?:the\s+)?" + _PLACE, after):
+        # ("at the D:north wall", "along the D:west wall": the room is at that wall of the plan)
+        if (
+            re.match(r"\s+(?:wall|walls|door|entrance|entry|window)\b", after)
+            and not re.match(r"\s+wall\s+of\s+(?:the\s+)?" + _PLACE, after)
+            and not (
+                re.match(r"\s+walls?\b", after)
+                and re.search(r"\b(?:at|on|along|against|by)\s+(?:the\s+)?$", before)
+                and not re.search(r"\b(?:door|doorway|entry|entrance|window|opening)\b", rest_text[: m.start()])
+            )
+        ):
             continue
         if re.search(r"\b(?:door|entry|entrance|window|opening)\s+(?:\w+\s+){0,3}$", before):
             continue
@@ -737,6 +842,11 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             continue
         # dimensions ("the north and south side length is 3 feet") and doors are not positions
         if re.match(r"(?:\s*(?:and|,|&)\s*D:\w+)*\s+(?:sides?\s+)?(?:length|lenght|width|measures?|dimension)", after):
+            continue
+        # "the D:north side is 10 feet", "D:west side- 20 feet", "the D:east and D:west are 2
+        # feet": the length of a side of the room
+        if re.match(r"(?:\s*(?:and|,|&)\s*D:\w+)*(?:\s+(?:sides?|walls?|edges?|ends?))?\s*(?:is|are|measures?|measuring|-|=|:)\s*"
+                    r"(?:about\s+|approximately\s+|around\s+|roughly\s+|only\s+)?\d+(?:\.\d+)?\s*(?:'|feet|foot|ft\b|m\b|meters?|metres?|inch)", after):
             continue
         if re.match(r"\s+(?:of|from)\s+(?:the\s+)?(?:main\s+|front\s+)?(?:door|entrance|entry|doorway)", after):
             continue
@@ -807,16 +917,19 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
     out: list[Statement] = []
     spans: list[tuple[int, int]] = []
     dim = (
-        _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:(wide|width|in\s+width|long|length|in\s+length|deep|depth|in\s+depth|tall|high)\s*)?"
+        _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:(wide|width|in\s+width|long|length|in\s+length|deep|depth|in\s+depth|tall|high|[lw](?=\s))\s*)?"
         r"(?:x|by|\*|:|×|and)\s*(?:a\s+)?" + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*"
-        r"(?:(wide|width|in\s+width|long|length|in\s+length|deep|depth|in\s+depth|tall|high)\b)?"
+        r"(?:(wide|width|in\s+width|long|length|in\s+length|deep|depth|in\s+depth|tall|high|[lw])\b)?"
     )
     for m in re.finditer(dim, text):
         a, b = float(m.group(1)), float(m.group(4))
         if a <= 0 or b <= 0 or a > 300 or b > 300:
             continue
         unit = _unit(m.group(2) or m.group(5), text)
-        first, second = (m.group(3) or "").replace("in ", "").strip(), (m.group(6) or "").replace("in ", "").strip()
+        # "12 ft L by 6 ft W": the letters are the words
+        letters = {"l": "long", "w": "wide"}
+        first, second = ((g or "").replace("in ", "").strip() for g in (m.group(3), m.group(6)))
+        first, second = letters.get(first, first), letters.get(second, second)
         oriented = first in ("wide", "width") or second in ("deep", "depth", "tall", "high")
         swapped = first in ("deep", "depth", "tall", "high", "long", "length") and second in ("wide", "width")
         w, d = (b, a) if swapped else (a, b)

@@ -403,8 +403,11 @@ def match_rooms(
 ) -> Reading:
     """Re-map same-type rooms ("common room 1" / "common room 2") to the room ids whose areas and
     adjacency agree best with what the text says about them (stated sizes, rooms named next to
-    them). The text's numbering says nothing about which id is which; this only permutes rooms of
-    one type, so nothing is invented."""
+    them, the compass words of the rooms the protocol pairs them with). The text's numbering says
+    nothing about which id is which; this only permutes rooms of one type, so nothing is invented.
+    The rooms of every type are matched together (up to :data:`MATCH_JOINT` combinations), as the
+    compass words that tell two master rooms apart may be those of two bathrooms that need telling
+    apart too; beyond that, one type after another."""
     by_type: dict[str, list[str]] = {}
     area = {r.id: r.area for r in rooms}
     for r in rooms:
@@ -416,25 +419,28 @@ def match_rooms(
         vs = [DIRECTIONS[s.direction] for s in ss if s.kind == "position" and s.direction in DIRECTIONS]
         if vs:
             compass[rid] = (sum(v[0] for v in vs) / len(vs), sum(v[1] for v in vs) / len(vs))
-    resolved = dict(reading.resolved)
-    statements = dict(reading.statements)
+    statements = reading.statements
+    resolved = reading.resolved
+    # the types to match: their rooms the text names (old ids), and the ids they may take
+    groups: list[tuple[list[str], list[str]]] = []
     for kind, ids in by_type.items():
-        keys = [k for k, v in resolved.items() if v in ids and k[0] == kind]
-        named = sorted({resolved[k] for k in keys})
-        if len(ids) < 2 or not named or len(ids) > 5:
-            continue
-        targets_of = set(ids)
+        named = sorted({v for k, v in resolved.items() if v in ids and k[0] == kind})
+        if 2 <= len(ids) <= 5 and named:
+            groups.append((named, ids))
+    if not groups:
+        return reading
 
-        def score(perm: dict[str, str]) -> float:
-            total = 0.0
-            # adjacent rooms lie near each other: the compass words of a room and of the rooms
-            # the protocol pairs it with should agree (a balcony "in the north" beside a master
-            # room "in the northeast", not the one "in the south")
-            where = {perm.get(rid, rid): v for rid, v in compass.items()}
-            for a, b in adj_pairs:
-                if (a in targets_of or b in targets_of) and a in where and b in where:
-                    (ax, ay), (bx, by) = where[a], where[b]
-                    total -= MATCH_COMPASS * (abs(ax - bx) + abs(ay - by))
+    def score(perm: dict[str, str]) -> float:
+        total = 0.0
+        # adjacent rooms lie near each other: the compass words of a room and of the rooms the
+        # protocol pairs it with should agree (a balcony "in the north" beside a master room "in
+        # the northeast", not the one "in the south")
+        where = {perm.get(rid, rid): v for rid, v in compass.items()}
+        for a, b in adj_pairs:
+            if a in where and b in where:
+                (ax, ay), (bx, by) = where[a], where[b]
+                total -= MATCH_COMPASS * (abs(ax - bx) + abs(ay - by))
+        for named, _ in groups:
             stated: dict[str, float] = {}
             for old in named:
                 for s in statements.get(old, []):
@@ -447,41 +453,48 @@ def match_rooms(
                 mean_a = sum(area[perm[o]] for o in stated) / len(stated)
                 for o, v in stated.items():
                     total -= abs(math.log(v / mean_s) - math.log(area[perm[o]] / mean_a))
-            for old in named:
-                for s in statements.get(old, []):
-                    for m in s.others:
-                        named_other = resolved.get(m.key)
-                        if named_other is None:
-                            continue
-                        total += 0.5 if frozenset((perm[old], perm.get(named_other, named_other))) in adj else 0.0
-            # statements by others naming these rooms
-            for rid, ss in statements.items():
-                if rid in named:
-                    continue
-                for s in ss:
-                    for m in s.others:
-                        ref = resolved.get(m.key)
-                        if ref is not None and ref in perm:
-                            total += 0.5 if frozenset((rid, perm[ref])) in adj else 0.0
-            return total
+        # rooms named next to each other are the protocol's adjacent rooms
+        for rid, ss in statements.items():
+            for s in ss:
+                for m in s.others:
+                    other = resolved.get(m.key)
+                    if other is not None and (rid in perm or other in perm):
+                        total += 0.5 if frozenset((perm.get(rid, rid), perm.get(other, other))) in adj else 0.0
+        return total
 
+    def best_of(chosen: list[tuple[list[str], list[str]]], fixed: dict[str, str]) -> dict[str, str]:
         best: tuple[float, dict[str, str]] | None = None
-        for targets in itertools.permutations(ids, len(named)):
-            perm = dict(zip(named, targets))
+        options = [list(itertools.permutations(ids, len(named))) for named, ids in chosen]
+        for targets in itertools.product(*options):
+            perm = dict(fixed)
+            for (named, _), t in zip(chosen, targets):
+                perm.update(zip(named, t))
             sc = score(perm)
             if best is None or sc > best[0] + 1e-9:
                 best = (sc, perm)
         assert best is not None
-        perm = best[1]
-        if all(k == v for k, v in perm.items()):
-            continue
-        for k in keys:
-            resolved[k] = perm[resolved[k]]
-        moved = {perm[o]: statements.pop(o) for o in named if o in statements}
-        statements.update(moved)
-        shifted = {perm[o]: compass.pop(o) for o in named if o in compass}
-        compass.update(shifted)
-    return Reading(statements=statements, unread=list(reading.unread), unresolved=list(reading.unresolved), resolved=resolved)
+        return best[1]
+
+    combinations = math.prod(math.perm(len(ids), len(named)) for named, ids in groups)
+    if combinations <= MATCH_JOINT:
+        perm = best_of(groups, {})
+    else:
+        perm = {}
+        for group in groups:
+            perm = best_of([group], perm)
+    if all(k == v for k, v in perm.items()):
+        return reading
+    return Reading(
+        statements={perm.get(rid, rid): ss for rid, ss in statements.items()},
+        unread=list(reading.unread),
+        unresolved=list(reading.unresolved),
+        resolved={k: perm.get(v, v) for k, v in resolved.items()},
+    )
+
+
+#: How many combinations of same-type rooms :func:`match_rooms` tries together at most (T2D dev:
+#: the most any plan has is 12).
+MATCH_JOINT = 720
 
 
 #: How much the compass words of rooms the protocol pairs count in :func:`match_rooms`, per unit
