@@ -34,7 +34,8 @@ rooms is tried. A re-layout is kept only when every room of the cluster is in on
 minimum area and with a usable square, no room gains a part one cell wide, every relation keeps
 its wall as above, and the cluster has fewer of ``mansion eval realism``'s defects in total than
 before (a lobby narrower than a mall's 2.4 m corridors for an accessible toilet that holds its
-square); of those, the fewest defects, then the rooms closest to their planned areas. Only a head
+square), or as many where one of its rooms had no usable square before (three WCs a little
+narrow for one 1 m wide); of those, the fewest defects, then the rooms closest to their planned areas. Only a head
 that is not the hub, with two to :data:`MAX_CLUSTER` rooms none of which has rooms of its own.
 
 A room below its clear width (``mansion eval realism``'s "narrow": an arm 1 m wide along its
@@ -999,7 +1000,8 @@ def _judged(
 ) -> tuple[float, FloorLayout] | None:
     """(the cluster's total miss, the layout) of a re-laid cluster when it passes the rules: every
     room in one piece, at its minimum area, with a usable square, no new part one cell wide, and
-    every relation keeping its wall; fewer defects over the cluster."""
+    every relation keeping its wall; fewer defects over the cluster, or as many where a room of
+    it was unusable before."""
     grid = layout.grid
     ids = list(grid.ids)
     layout_types = {r.id: r.room_type for r in layout.rooms}
