@@ -330,25 +330,40 @@ def test_leave_out_drops_repeated_rooms_with_their_own_rooms_never_the_last_of_a
     assert same is graph and notes == []
 
 
+def _is_left_out(note: str, why: str = "laid out") -> bool:
+    """Whether a floor's note is of a room it left out because of how it was laid out (``why``;
+    not the planner's 'optional rooms left out' for a floor too small)."""
+    return " left out" in note and why in note
+
+
 def _rooms_left_out(b: Building, why: str = "laid out") -> list[str]:
-    """The notes of rooms a floor left out because of how they were laid out (not the planner's
-    'optional rooms left out' for a floor too small)."""
-    return [r for f in b.floors for r in f.relaxations if " left out" in r and why in r]
+    """The notes of rooms the building's floors left out (:func:`_is_left_out`)."""
+    return [r for f in b.floors for r in f.relaxations if _is_left_out(r, why)]
 
 
-_HOSPITAL = "a 3-storey hospital"
+def _assert_left_out_rooms_gone(b: Building, why: str) -> None:
+    """Every room a floor's note says it left out (``why``) is gone from its graph and layout."""
+    for f in b.floors:
+        for note in f.relaxations:
+            if _is_left_out(note, why):
+                room = note.split(" left out")[0]
+                assert room not in {n.id for n in f.graph.nodes} | {r.id for r in f.layout.rooms}
 
 
-@functools.lru_cache(maxsize=1)
-def _tight_hospital() -> tuple[int, Building]:
-    """The first seed (of twelve) whose three-storey hospital has a floor too tight for its
-    rooms: a floor laid out again without some of them. Found, not pinned: which floors are tight
-    changes with every change to the layout."""
+def _hospital(seed: int) -> Building:
+    return generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=seed)
+
+
+@functools.lru_cache(maxsize=None)
+def _hospital_leaving_out(why: str = "laid out") -> tuple[int, Building]:
+    """The first seed (of twelve) whose three-storey hospital has a floor that left rooms out
+    (``why``: too tight for them, or also one below its width). Found, not pinned: which floors
+    are tight changes with every change to the layout."""
     for seed in range(12):
-        b = generate_building(_HOSPITAL, building_type="hospital", floors=3, seed=seed)
-        if _rooms_left_out(b):
+        b = _hospital(seed)
+        if _rooms_left_out(b, why):
             return seed, b
-    raise AssertionError("no hospital of seeds 0-11 has a floor too tight for its rooms")
+    raise AssertionError(f"no hospital of seeds 0-11 left a room out ({why})")
 
 
 def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> None:
@@ -362,20 +377,15 @@ def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> Non
         unfit = sum(len(steps.unfit_rooms(f.layout.rooms, f.graph)) for f in floors)
         return unfit, unfit + sum(len(steps.narrow_rooms(f.layout.rooms, "hospital")) for f in floors)
 
-    seed, b = _tight_hospital()
-    for f in b.floors:
-        ids = {n.id for n in f.graph.nodes}
-        for note in f.relaxations:
-            if " left out" in note and "laid out" in note:
-                room = note.split(" left out")[0]
-                assert room not in ids and room not in {r.id for r in f.layout.rooms}
+    seed, b = _hospital_leaving_out()
+    _assert_left_out_rooms_gone(b, "laid out")
     with pytest.MonkeyPatch.context() as mp:
         # the recut and the merge that follow would mend what either layout leaves unfit
         mp.setattr(steps, "recut_unfit_rooms", lambda layout, *_, **__: (layout, []))
         mp.setattr(steps, "merge_unfit_rooms", lambda layout, graph, *_, **__: (layout, graph, []))
-        out = generate_building(_HOSPITAL, building_type="hospital", floors=3, seed=seed)
+        out = _hospital(seed)
         mp.setattr(steps, "leave_out", lambda graph, unfit, keep=(): (graph, []))
-        kept = generate_building(_HOSPITAL, building_type="hospital", floors=3, seed=seed)
+        kept = _hospital(seed)
     assert _rooms_left_out(out) and not _rooms_left_out(kept)
     (unfit, both), (unfit_kept, both_kept) = defects(out), defects(kept)
     assert unfit <= unfit_kept and both < both_kept
@@ -387,8 +397,8 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
     kept; with one seed, the floor keeps its rooms."""
     from mansion.building import steps
 
-    seed, b = _tight_hospital()
-    tight = {f.index for f in b.floors if any(" left out" in r and "laid out" in r for r in f.relaxations)}
+    seed, b = _hospital_leaving_out()
+    tight = {f.index for f in b.floors if any(_is_left_out(r) for r in f.relaxations)}
     solve = steps._solve
     tried: list[tuple[int, int]] = []
 
@@ -404,7 +414,7 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "_solve", solve_again)
         mp.setattr(steps, "_fits_better", refuse_first)
-        again = generate_building(_HOSPITAL, building_type="hospital", floors=3, seed=seed)
+        again = _hospital(seed)
         for index in tight:
             seeds = [s for i, s in tried if i == index]
             # the floor's own seed, then others of its own (a seed the solver cannot lay out is
@@ -413,7 +423,7 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
         assert _rooms_left_out(again)
         tried.clear()
         mp.setattr(steps, "RESOLVE_SEEDS", 1)
-        once = generate_building(_HOSPITAL, building_type="hospital", floors=3, seed=seed)
+        once = _hospital(seed)
     assert all(len([s for i, s in tried if i == index]) == 1 for index in tight)
     assert not _rooms_left_out(once)
 
@@ -460,21 +470,11 @@ def test_a_floor_laid_out_again_also_spares_a_room_below_its_width() -> None:
     width (recorded, and gone from the floor); without ``SPARE_NARROW`` it spares none of them."""
     from mansion.building import steps
 
-    for seed in range(12):
-        b = generate_building(_HOSPITAL, building_type="hospital", floors=3, seed=seed)
-        notes = _rooms_left_out(b, "narrower than its clear width")
-        if notes:
-            break
-    else:
-        raise AssertionError("no hospital of seeds 0-11 spares a room below its width")
-    for f in b.floors:
-        for note in f.relaxations:
-            if "narrower than its clear width" in note:
-                room = note.split(" left out")[0]
-                assert room not in {n.id for n in f.graph.nodes} | {r.id for r in f.layout.rooms}
+    seed, b = _hospital_leaving_out("narrower than its clear width")
+    _assert_left_out_rooms_gone(b, "narrower than its clear width")
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "SPARE_NARROW", False)
-        only_small = generate_building(_HOSPITAL, building_type="hospital", floors=3, seed=seed)
+        only_small = _hospital(seed)
     assert not _rooms_left_out(only_small, "narrower than its clear width")
 
 

@@ -10,7 +10,7 @@ from mansion.building.merge import shape_defects
 from mansion.models.layout import FloorLayout
 from mansion.building.load_bearing import cut_parents
 from mansion.building.recut import _cluster, _passable, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
-from test_merge import graph_of, layout_of, unfit
+from test_merge import first_noted, graph_of, layout_of, unfit
 
 # Half-metre cells, the top line the floor's far side. C corridor (the hub), G a guest room, E its
 # ensuite: a strip 1 m wide and 2.5 m long (2.5 m², its minimum 3 m², no usable square).
@@ -99,18 +99,9 @@ def test_generated_floors_cut_rooms_again_before_merging_or_dropping_them() -> N
     was cut from (its bay of the open office), the floor records it, the room stays in the graph
     and is no longer unfit. The first of a few buildings that did so when this was written is
     used: which rooms come out unfit changes with every change to the layout."""
-    from mansion.building import generate_building
     from mansion.building.steps import unfit_rooms
-    from mansion.eval.realism import bench_case
 
-    for seed in (173, 131, 89, 88):
-        kind, floors, description = bench_case(seed)
-        b = generate_building(description, building_type=kind, floors=floors, seed=seed)
-        notes = [(f, n) for f in b.floors if f.copy_of is None for n in f.relaxations if " cut again from " in n]
-        if notes:
-            break
-    else:
-        raise AssertionError("none of the buildings cut a room again")
+    b, notes = first_noted((173, 131, 89, 88), " cut again from ", copies=False)
     assert b.program.load_bearing_walls
     for f, note in notes:
         room = note.split(" cut again")[0]
