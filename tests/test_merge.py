@@ -8,7 +8,7 @@ import pytest
 from mansion.building import check_building
 from mansion.building.checks import check_graph
 from mansion.building.merge import grid_adjacencies, merge_unfit_rooms
-from mansion.building.steps import unfit_rooms
+from mansion.building.steps import NARROW_WHY, narrow_rooms, unfit_rooms
 from mansion.models import RoomGraph
 from mansion.models.building import Building, Floor
 from mansion.models.layout import Diagnostics, FloorLayout, LabelGrid, LayoutRoom
@@ -149,6 +149,58 @@ CCCCCCCCCCCCCCCCCCCC
     assert set(unfit(layout, graph)) == {"ward_2_ensuite", "ward_3"}
     merged, same, notes = merge_unfit_rooms(layout, graph, unfit, "hospital")
     assert notes == [] and merged == layout and same == graph
+
+
+def narrow(layout: FloorLayout, graph: RoomGraph) -> dict[str, str]:
+    return dict.fromkeys(narrow_rooms(layout.rooms, "hospital"), NARROW_WHY)
+
+
+def test_rooms_below_their_width_merge_only_where_the_merged_room_comes_out_at_its_width() -> None:
+    # A and B, wards 2.5 m wide (a ward's clear width: 3.2 m) and large enough; D, a ward 3.5 m
+    # wide; N, a nurse station 1.5 m wide (the only one); G and H, wards 2 m by 1.5 m
+    # whose merged room would be 1.5 m deep still
+    picture = """
+GGGGHHHHBBDDDDDDDNNN
+GGGGHHHHBBDDDDDDDNNN
+GGGGHHHHBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+AAAAABBBBBDDDDDDDNNN
+CCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCC
+"""
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "A": ("ward_1", "area", "ward", 3.0),
+        "B": ("ward_2", "area", "ward", 3.0),
+        "D": ("ward_3", "area", "ward", 3.0),
+        "G": ("ward_4", "area", "ward", 3.0),
+        "H": ("ward_5", "area", "ward", 3.0),
+        "N": ("nurse_station", "area", "nurse_station", 3.0),
+    }
+    edges = [("corridor", n[0]) for k, n in names.items() if k != "C"]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    assert unfit(layout, graph) == {}
+    assert set(narrow(layout, graph)) == {"ward_1", "ward_2", "ward_4", "ward_5", "nurse_station"}
+    merged, fewer, notes = merge_unfit_rooms(layout, graph, narrow, "hospital", cure="narrow")
+    # ward_1 and ward_2 make one ward 5 m wide (ward_2's arm beside ward_5 is under a tenth of
+    # it); ward_4 and ward_5, 1.5 m deep together too, and the nurse
+    # station, which no ward takes in, stay as they were
+    assert notes == [f"ward_1 merged into ward_2 (ward_1 {NARROW_WHY})"]
+    assert set(narrow(merged, fewer)) == {"ward_4", "ward_5", "nurse_station"}
+    assert merged.room("ward_2").area == 21.5
+    check_graph(fewer, "floor 0")
+    # without the cure, a merge may keep the merged room narrow: ward_4 and ward_5 become one
+    _, _, anyhow = merge_unfit_rooms(layout, graph, narrow, "hospital")
+    assert f"ward_4 merged into ward_5 (ward_4 {NARROW_WHY})" in anyhow
 
 
 def test_floors_that_carry_walls_merge_only_within_one_first_round_region() -> None:

@@ -317,6 +317,7 @@ def merge_unfit_rooms(
     building_type: str | None = None,
     same_region: bool = False,
     keep: Iterable[str] = (),
+    cure: str | None = None,
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """Merge each room ``unfit`` names (id → why) into a neighbour, or a neighbour into it, where
     the module's rules allow; the smallest unfit room first, each time the merge whose merged room
@@ -333,10 +334,10 @@ def merge_unfit_rooms(
         rooms = {r.id: r for r in layout.rooms}
         room = min(bad, key=lambda r: (rooms[r].area, r))
         tried.add(room)
-        found = _best_merge(layout, graph, room, building_type, same_region, kept)
+        found = _best_merge(layout, graph, room, building_type, same_region, kept, cure=cure)
         dropped = found is None
         if dropped:
-            found = _best_merge(layout, graph, room, building_type, same_region, kept, drop=True)
+            found = _best_merge(layout, graph, room, building_type, same_region, kept, drop=True, cure=cure)
         if found is None:
             continue
         gone, stays = found
@@ -359,6 +360,7 @@ def _best_merge(
     same_region: bool,
     keep: frozenset[str],
     drop: bool = False,
+    cure: str | None = None,
 ) -> tuple[list[str], str] | None:
     """(the rooms that go, the room that stays) of the best merge for ``room``, or None when no
     merge passes the rules. A room with a bathroom of its own takes it along: the merged room
@@ -410,6 +412,8 @@ def _best_merge(
             # may remain, none either lacked may appear
             kind = held.room_type
             after = shape_defects(union, kind, building_type)
+            if cure is not None and cure in after:
+                continue
             if after and not after <= (
                 shape_defects(Polygon(held.polygon, held.holes), kind, building_type)
                 & shape_defects(Polygon(lost.polygon, lost.holes), kind, building_type)
