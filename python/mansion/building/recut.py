@@ -256,6 +256,30 @@ def _mend_rooms(
     return layout
 
 
+def width_squares(
+    layout: FloorLayout, room: str, nodes: dict[str, RoomNode], building_type: str | None,
+) -> tuple[np.ndarray, list[str], np.ndarray, set[str], np.ndarray] | None:
+    """For ``room`` below its clear width: (the layout's labels, their ids, the room's cells, its
+    realism defects, the cells its width's squares cover), or None when it is not below its width
+    or those cells are not one piece at its minimum area (or what it has, if less)."""
+    rooms = {r.id: r for r in layout.rooms}
+    kind = rooms[room].room_type
+    cell = layout.grid.cell_size
+    labels = layout.grid.array().astype(np.int32)
+    ids = list(layout.grid.ids)
+    mask = labels == ids.index(room)
+    before = mask_defects(mask, kind, building_type, cell)
+    if "narrow" not in before:
+        return None
+    keep = square_cover(mask, needed_width(kind, building_type) - 2 * EPS, cell)
+    if (
+        not keep.any() or not _connected(keep)
+        or keep.sum() * cell * cell + EPS < min(_least(nodes[room]), rooms[room].area)
+    ):
+        return None
+    return labels, ids, mask, before, keep
+
+
 def _handed_off(
     layout: FloorLayout,
     graph: RoomGraph,
@@ -272,20 +296,11 @@ def _handed_off(
     if _wide_rectangle(rooms[room], building_type):
         return None
     kind = rooms[room].room_type
-    need = needed_width(kind, building_type)
-    labels = layout.grid.array().astype(np.int32)
-    ids = list(layout.grid.ids)
+    found = width_squares(layout, room, nodes, building_type)
+    if found is None:
+        return None
+    labels, ids, mask, before, keep = found
     k = ids.index(room)
-    mask = labels == k
-    before = mask_defects(mask, kind, building_type, cell)
-    if "narrow" not in before:
-        return None
-    keep = square_cover(mask, need - 2 * EPS, cell)
-    if (
-        not keep.any() or not _connected(keep)
-        or keep.sum() * cell * cell + EPS < min(_least(nodes[room]), rooms[room].area)
-    ):
-        return None
     new = labels
     # the largest strip first: it decides most of the room's share below its width
     for strip in sorted(_pieces(mask & ~keep), key=lambda p: (-len(p), p)):

@@ -29,8 +29,11 @@ where an architect would, or dropped where the program can do without it
 beside it, a flat's second bedroom into its living room), each recorded. Then rooms below their
 clear width are cut again as rectangles where a neighbour can give them floor
 (:func:`mansion.building.recut.recut_narrow_rooms`), the strips of those still below it are
-handed to the rooms beside them (:func:`mansion.building.recut.hand_off_strips`), and last,
-parts of rooms one cell wide are widened from a neighbour
+handed to the rooms beside them (:func:`mansion.building.recut.hand_off_strips`), what is
+still below its width merges like a room too small where the merged room comes out at its width
+(:data:`MERGE_NARROW`: two wards 2.5 m wide become one), a room below its width only by a
+pocket beside a core keeps it as a store (:mod:`mansion.building.stores`), each recorded, and
+last, parts of rooms one cell wide are widened from a neighbour
 (:func:`mansion.building.recut.widen_passages`).
 """
 
@@ -55,6 +58,7 @@ from mansion.building.load_bearing import (
 )
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms, shape_defects
 from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
+from mansion.building.stores import store_pockets
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
@@ -293,6 +297,11 @@ SPARE_NARROW = True
 #: on the offline hundreds: seeds 0-99, below width 205 -> 176 for 36 rooms fewer
 #: (4,375 -> 4,339); seeds 100-199, 167 -> 134 for 38 fewer; 1.10 / 1.07 times the process time.
 MERGE_NARROW = True
+#: Whether a room below its width only by a pocket (the end of a shop's floor past a stair, a
+#: food court's bay beside a lift) keeps the pocket as a store of its own
+#: (:func:`mansion.building.stores.store_pockets`). Measured on the offline hundreds: below width
+#: 176 -> 162 (25 stores; malls 97 and 55 hold 22 of them), second hundred 134 -> 133.
+STORE_POCKETS = True
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
 
@@ -577,6 +586,13 @@ def solve_building_floor(
                 same_region=program.load_bearing_walls, keep=asked, cure="narrow",
             )
             mended += merged
+        if STORE_POCKETS:
+            # and what is below its width only by a pocket (beside a core, past a stair) keeps
+            # the pocket as a store of its own
+            layout, graph, stored = store_pockets(
+                layout, graph, program.building_type, NARROW_WHY, min_contact=solver.get("min_contact", 1.0),
+            )
+            mended += stored
         # last, passages 0.5 m wide (left by rounds laid out at 1 m rules) widened from a neighbour
         layout = widen_passages(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
