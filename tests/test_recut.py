@@ -93,6 +93,41 @@ CCCCCCCCCCCC
     assert flat.area >= 13.0 and not shape_defects(Polygon(flat.polygon, flat.holes), "unit_living", None)
 
 
+def test_a_room_with_a_room_cut_from_it_is_cut_again_its_ensuite_left_where_it_is() -> None:
+    # G, a guest room of 15.75 m² (its minimum 16 m²) with its ensuite E; S a store off the
+    # corridor, which is 3 m deep and can give the guest room a row
+    picture = """
+GGGGGGGEEEE
+GGGGGGGEEEE
+GGGGGGGEEEE
+GGGGGGGEEEE
+GGGGGGGSSSS
+GGGGGGGSSSS
+GGGGGGGSSSS
+GGGGGGGSSSS
+GGGGGGGSSSS
+CCCCCCCCCCC
+CCCCCCCCCCC
+CCCCCCCCCCC
+CCCCCCCCCCC
+CCCCCCCCCCC
+CCCCCCCCCCC
+"""
+    names = {**NAMES, "S": ("storage_1", "area", "storage", 2.0)}
+    edges = [*EDGES, ("corridor", "storage_1")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    assert set(unfit(layout, graph)) == {"guest_room_1"}
+    fixed, notes = recut_unfit_rooms(layout, graph, unfit, "hotel")
+    assert len(notes) == 1 and notes[0].startswith("guest_room_1 cut again from corridor at 17.5 m²")
+    assert unfit(fixed, graph) == {}
+    # the ensuite keeps its cells, and its door's wall with the guest room
+    was, now = layout.grid.array(), fixed.grid.array()
+    k = layout.grid.ids.index("guest_room_1_ensuite")
+    assert ((was == k) == (now == fixed.grid.ids.index("guest_room_1_ensuite"))).all()
+    assert fixed.adjacency("guest_room_1", "guest_room_1_ensuite").longest == 2.0  # type: ignore[union-attr]
+    assert fixed.adjacency("corridor", "storage_1").longest == 2.0  # type: ignore[union-attr]
+
+
 def test_generated_floors_cut_rooms_again_before_merging_or_dropping_them() -> None:
     """Buildings on load-bearing walls of the realism hundreds lay a room out below its minimum
     (an office's meeting room at 7 m² against its 10 m²): it is cut again inside the region it

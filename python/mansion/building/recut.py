@@ -22,8 +22,10 @@ kept only when
 - the room it was cut from gains no part that no 1 m square covers (a passage 0.5 m wide the
   agent cannot take), nor has such squares split into more pieces, two joined only where they
   overlap by a 1 m side (:func:`_passable`);
-- the room has no rooms cut from it (their regions would move) and is no core; on a floor whose
-  walls carry the floor above both rooms sit in one first-round region, so no carried wall moves.
+- the room is no core; a room with rooms cut from it (a guest room and its ensuite) moves only
+  its own cells, theirs staying where they are, their walls with it held like every relation's;
+  on a floor whose walls carry the floor above both rooms sit in one first-round region, so no
+  carried wall moves.
 
 A room of a cluster that no rectangle mends (an accessible toilet 1 m wide between two WCs and
 their lobby), or a cluster's head itself (a toilet lobby without a usable square), has the whole
@@ -130,7 +132,9 @@ def recut_unfit_rooms(
         up = parent.get(room)
         if up is None or nodes[room].is_core:
             continue
-        best = None if room in has_children else _best_over_donors(
+        # a room with rooms cut from it (a guest room and its ensuite) moves its own cells only:
+        # theirs stay, and their walls with it must hold (_best_recut keeps every relation's)
+        best = _best_over_donors(
             layout, graph, room, up, parent, nodes, group, building_type, min_contact,
         )
         if best is None:

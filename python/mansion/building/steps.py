@@ -598,6 +598,14 @@ def solve_building_floor(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
             same_region=program.load_bearing_walls,
         )
+        # the width mends move walls: a room still below its minimum area may now find a
+        # rectangle the first recut could not (a dishwashing room beside its kitchen)
+        if unfit_of(layout, graph):
+            layout, again = recut_unfit_rooms(
+                layout, graph, unfit_of, program.building_type,
+                min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+            )
+            mended += again
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
