@@ -394,7 +394,8 @@ def test_a_tight_floor_leaves_rooms_out_rather_than_below_their_minimum() -> Non
 def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
     """When the first layout without the rooms left out is refused, the floor is laid out again
     under another seed of its own (up to ``RESOLVE_SEEDS``), and the first one that passes is
-    kept; with one seed, the floor keeps its rooms."""
+    kept; with one seed, the floor keeps its rooms. (A floor laid out again for rooms below
+    their width alone gets ``RESOLVE_NARROW_SEEDS``: here as many.)"""
     from mansion.building import steps
 
     seed, b = _hospital_leaving_out()
@@ -414,6 +415,7 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "_solve", solve_again)
         mp.setattr(steps, "_fits_better", refuse_first)
+        mp.setattr(steps, "RESOLVE_NARROW_SEEDS", steps.RESOLVE_SEEDS)
         again = _hospital(seed)
         for index in tight:
             seeds = [s for i, s in tried if i == index]
@@ -423,9 +425,37 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
         assert _rooms_left_out(again)
         tried.clear()
         mp.setattr(steps, "RESOLVE_SEEDS", 1)
+        mp.setattr(steps, "RESOLVE_NARROW_SEEDS", 1)
         once = _hospital(seed)
     assert all(len([s for i, s in tried if i == index]) == 1 for index in tight)
     assert not _rooms_left_out(once)
+
+
+def test_a_floor_with_rooms_below_their_width_alone_is_laid_out_again_without_one() -> None:
+    """A floor whose rooms are all at their minimum area but some below their clear width is laid
+    out again without the smallest of them of each type (``RESOLVE_NARROW``): the rooms named
+    in its notes are gone, and without the step the floor keeps them."""
+    from mansion.building import steps
+
+    for seed in range(12):
+        b = _hospital(seed)
+        narrow_only = [
+            f for f in b.floors
+            if (notes := [n for n in f.relaxations if _is_left_out(n)])
+            and all(n.endswith(steps.NARROW_WHY) for n in notes)
+        ]
+        if narrow_only:
+            break
+    else:
+        pytest.fail("no hospital of twelve laid out a floor again for rooms below their width alone")
+    _assert_left_out_rooms_gone(b, steps.NARROW_WHY)
+    floor = narrow_only[0]
+    gone = [n.split(" left out")[0] for n in floor.relaxations if _is_left_out(n)]
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "RESOLVE_NARROW", False)
+        kept = _hospital(seed).floors[floor.index]
+    assert not any(_is_left_out(n) for n in kept.relaxations)
+    assert set(gone) <= {n.id for n in kept.graph.nodes}
 
 
 def test_narrow_rooms_and_the_smallest_of_each_type_a_floor_may_spare() -> None:

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, mask_defects, rooms_from_grid
-from mansion.building.recut import _kept_walls, _pieces, _walls, width_squares
+from mansion.building.recut import _kept_walls, _pieces, _walls, _wide_rectangle, width_squares
 from mansion.models.graph import RoomEdge, RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_shape import EPS
@@ -50,15 +50,17 @@ def store_pockets(
     relaxation note per store naming the room and ``why`` it was mended."""
     notes: list[str] = []
     nodes = {n.id: n for n in graph.nodes}
-    for room in sorted(r.id for r in layout.rooms):
+    rooms = {r.id: r for r in layout.rooms}
+    for room in sorted(rooms):
         node = nodes.get(room)
-        if node is None or node.is_core:
+        if node is None or node.is_core or _wide_rectangle(rooms[room], building_type):
             continue
         found = _stored(layout, graph, room, building_type, min_contact)
         if found is None:
             continue
         layout, graph, stores = found
         nodes = {n.id: n for n in graph.nodes}
+        rooms = {r.id: r for r in layout.rooms}
         for store in stores:
             notes.append(f"{store} made a store of {room}'s pocket ({room} {why})")
     return layout, graph, notes
