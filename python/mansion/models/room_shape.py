@@ -5,6 +5,9 @@ never disagree."""
 
 from __future__ import annotations
 
+import functools
+
+import shapely
 from shapely.geometry.base import BaseGeometry
 
 __all__ = [
@@ -39,6 +42,15 @@ def narrow_share(shape: BaseGeometry, width: float, inclusive: bool = False) -> 
     that wide); 0 for an empty shape."""
     if shape.area <= 0:
         return 0.0
+    return _narrow_share(shape.wkb, width, inclusive)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _narrow_share(wkb: bytes, width: float, inclusive: bool) -> float:
+    """:func:`narrow_share` of the shape ``wkb`` holds. The floor's mends judge the same rooms
+    again and again (every room of a floor after each merge, recut or hand-off, most of them
+    unchanged), and the opening is the dearest measure: cached by the shape's exact bytes."""
+    shape = shapely.from_wkb(wkb)
     kept = opening(shape, width, inclusive).intersection(shape).area
     return max(0.0, 1.0 - kept / shape.area)
 
@@ -52,7 +64,13 @@ def mostly_narrower(shape: BaseGeometry, width: float, inclusive: bool = False) 
 def fits_square(shape: BaseGeometry, side: float, inclusive: bool = False) -> bool:
     """True when a ``side`` × ``side`` axis-aligned square (``inclusive``: a hair larger) fits
     inside ``shape``."""
-    return not shape.buffer(-_half(side, inclusive), join_style="mitre").is_empty
+    return _fits_square(shape.wkb, side, inclusive)
+
+
+@functools.lru_cache(maxsize=1 << 16)
+def _fits_square(wkb: bytes, side: float, inclusive: bool) -> bool:
+    """:func:`fits_square` of the shape ``wkb`` holds, cached as :func:`_narrow_share` is."""
+    return not shapely.from_wkb(wkb).buffer(-_half(side, inclusive), join_style="mitre").is_empty
 
 
 def box_aspect(shape: BaseGeometry) -> float:
