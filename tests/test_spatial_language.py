@@ -566,10 +566,13 @@ def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: p
         return np.zeros((64, 64), dtype=int), _Layout(len(solved))
 
     monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: float(len(solved)))
+    # the stand-in layouts give three sets of room seeds: three are laid out again
+    assert REFINE >= 3
+    monkeypatch.setattr(text_placement, "REFINE", 3)
     chosen, _, _ = solve_from_text(plan, "The kitchen is in the north.", solve)
     # the last solves start from the rooms of the three layouts that disagreed least (the first three)
-    first = len(solved) - REFINE
-    assert first > REFINE and solved[first:] == [_room_seeds(_Layout(n).grid) for n in (1, 2, 3)]
+    first = len(solved) - 3
+    assert first > 3 and solved[first:] == [_room_seeds(_Layout(n).grid) for n in (1, 2, 3)]
     # the seeds kept are ones the solve was given
     assert chosen in solved
 
@@ -1019,3 +1022,100 @@ def test_a_second_number_after_a_numbered_room_names_its_sibling() -> None:
     assert facts("The kitchen is near common room 1, 4 feet from its door.", TWO_COMMONS) == {
         ("kitchen_2", "relation", "next_to", ("common_room_4",)),
     }
+
+
+def test_rooms_on_a_ring_follow_the_adjacency_then_the_start_directions() -> None:
+    from mansion.planning.spatial_seeds import ring_seeds
+
+    mask = np.zeros((40, 40), dtype=bool)
+    mask[5:35, 5:35] = True
+    free = FreeGrid(mask)
+    rooms = [SeedRoom("hub", "living_room", 400.0)] + [SeedRoom(r, "common_room", 50.0) for r in "abcd"]
+    # the start seeds put a east, c north, b west, d south; the adjacency runs a-b-c-d-a
+    start = {"hub": (20.0, 20.0), "a": (30.0, 20.0), "c": (20.0, 30.0), "b": (10.0, 20.0), "d": (20.0, 10.0)}
+    adjacency = [("a", "b"), ("b", "c"), ("c", "d"), ("d", "a")] + [("hub", r) for r in "abcd"]
+    seeds = ring_seeds(rooms, free, adjacency, start)
+    assert seeds == ring_seeds(rooms, free, adjacency, start)  # deterministic
+    assert all(free.contains(p) for p in seeds.values()) and len(set(seeds.values())) == 5
+    # the hub in the middle, the others around it
+    assert np.hypot(seeds["hub"][0] - 20.0, seeds["hub"][1] - 20.0) <= 1.0
+    angle = {r: np.arctan2(seeds[r][1] - 20.0, seeds[r][0] - 20.0) for r in "abcd"}
+    cycle = "".join(sorted("abcd", key=lambda r: angle[r]))
+    # adjacent rooms side by side on the ring: a-b-c-d, either way round
+    assert cycle in {"abcd", "bcda", "cdab", "dabc", "dcba", "cbad", "badc", "adcb"}
+    # among the orders that pair as many neighbours, the one nearest the start directions: a
+    # stays east, as the start put it
+    assert seeds["a"][0] > 25.0 and abs(seeds["a"][1] - 20.0) < 5.0
+    # a room's place: part of the way from the middle to the region's edge
+    assert all(5.0 < np.hypot(seeds[r][0] - 20.0, seeds[r][1] - 20.0) < 14.0 for r in "abcd")
+    # without adjacency between the others, the start directions alone decide
+    free_order = ring_seeds(rooms, free, [("hub", r) for r in "abcd"], start)
+    assert free_order["c"][1] > 25.0 and free_order["b"][0] < 15.0 and free_order["d"][1] < 15.0
+
+
+def test_when_nothing_else_lays_a_plan_out_the_rooms_are_put_on_a_ring(monkeypatch: pytest.MonkeyPatch) -> None:
+    from dataclasses import replace
+
+    from mansion.eval.t2d import T2DPlan
+    from mansion.eval.text_placement import VARIANTS, solve_from_text, text_problem
+    from mansion.exceptions import InfeasibleLayoutError
+    from mansion.planning.spatial_seeds import SeedWeights, ring_seeds
+
+    plan = T2DPlan.model_validate(make_plan(3))
+    text = "The kitchen is in the north."
+    state = {"heuristic": False}
+
+    class _Layout:
+        grid = _Grid(np.zeros((2, 2), dtype=int), ["room"])
+
+    def solve(seeds):
+        # nothing lays out until the solver's own heuristic has failed too
+        if not state["heuristic"]:
+            raise InfeasibleLayoutError("no layout")
+        return np.zeros((64, 64), dtype=int), _Layout()
+
+    def heuristic():
+        state["heuristic"] = True
+        raise InfeasibleLayoutError("the heuristic fails too")
+
+    monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
+    seeds, pred, _ = solve_from_text(plan, text, solve, heuristic, lambda s, k: solve(s))
+    p = text_problem(plan, text)
+    first, _ = place_seeds(p.reading, p.rooms, p.free, p.adjacency, weights=replace(SeedWeights(), **VARIANTS[0]))
+    assert seeds == ring_seeds(p.rooms, p.free, p.adjacency, first) and pred.shape == (64, 64)
+    # when the ring cannot be laid out either, the plan fails with the last error
+
+    def never(seeds):
+        raise InfeasibleLayoutError("never")
+
+    with pytest.raises(InfeasibleLayoutError):
+        solve_from_text(plan, text, never, heuristic, lambda s, k: never(s))
+
+
+def test_every_seed_set_is_solved_under_two_random_seeds_of_the_solver(monkeypatch: pytest.MonkeyPatch) -> None:
+    from mansion.eval.t2d import T2DPlan
+    from mansion.eval.text_placement import SOLVER_SEEDS, solve_from_text
+
+    assert SOLVER_SEEDS == 2
+    plan = T2DPlan.model_validate(make_plan(3))
+    first: list[dict] = []
+    second: list[dict] = []
+
+    class _Layout:
+        grid = _Grid(np.zeros((2, 2), dtype=int), ["room"])
+
+    def solve(seeds):
+        first.append(seeds)
+        return np.zeros((64, 64), dtype=int), _Layout()
+
+    def reseed(seeds, k):
+        assert k == 1
+        second.append(seeds)
+        return np.zeros((64, 64), dtype=int), _Layout()
+
+    monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
+    solve_from_text(plan, "The kitchen is in the north. The bathroom is in the southwest corner.", solve, None, reseed)
+    # the seed sets read from the text, each under both; the stand-in layout's own rooms are laid
+    # out again once more, under the random seed that laid it out
+    read = [s for s in first if "room" not in s]
+    assert len(read) >= 2 and read == [s for s in second if "room" not in s]

@@ -38,7 +38,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "DISAGREEMENT_WEIGHTS", "FreeGrid", "SeedReport", "SeedRoom", "SeedWeights", "disagreement_parts",
-    "layout_disagreement", "match_rooms", "place_seeds",
+    "layout_disagreement", "match_rooms", "place_seeds", "ring_seeds",
 ]
 
 
@@ -356,6 +356,107 @@ def place_seeds(
     for text in reading.unread:
         report.ignored.append(f"{text!r}: no position, relation or size read")
     return seeds, report
+
+
+#: How far from the region's middle to its edge :func:`ring_seeds` puts each room.
+RING_REACH = 0.65
+#: Up to this many rooms beside the hub, :func:`ring_seeds` tries every cyclic order.
+RING_EXHAUSTIVE = 7
+
+
+def ring_seeds(
+    rooms: Sequence[SeedRoom],
+    free: FreeGrid,
+    adjacency: Iterable[tuple[str, str]],
+    start: dict[str, tuple[float, float]],
+    *,
+    reach: float = RING_REACH,
+) -> dict[str, tuple[float, float]]:
+    """Seeds with the hub (the largest room) in the middle of the free region and every other
+    room on a ring around it, in the cyclic order that puts the most pairs of adjacent rooms side
+    by side, turned and run to agree best with the directions of the ``start`` seeds from the
+    region's middle. Each room sits ``reach`` of the way from the middle to the region's edge
+    along its direction. A last resort when no seed set read from a text can be laid out: the
+    solver's cut rounds grow rooms from the hub outwards, and a ring whose neighbours follow the
+    adjacency is the arrangement they lay out most readily."""
+    import numpy as np
+
+    if not rooms:
+        raise InvalidInputError("no rooms to seed")
+    mask = np.asarray(free.mask, dtype=bool)
+    rr, cc = np.nonzero(mask)
+    X, Y = cc + 0.5, rr + 0.5
+    mx, my = float(X.mean()), float(Y.mean())
+    ids = [r.id for r in rooms]
+    hub = max(range(len(rooms)), key=lambda k: rooms[k].area)
+    others = [rid for k, rid in enumerate(ids) if k != hub]
+    adj = {frozenset(p) for p in adjacency if len(set(p)) == 2}
+
+    def cell_of(point: tuple[float, float]) -> tuple[float, float]:
+        return ((point[0] - free.origin[0]) / free.cell, (point[1] - free.origin[1]) / free.cell)
+
+    angle = {}
+    for rid in others:
+        px, py = cell_of(start[rid]) if rid in start else (mx, my)
+        angle[rid] = math.atan2(py - my, px - mx)
+
+    def paired(cycle: Sequence[str]) -> int:
+        m = len(cycle)
+        return sum(frozenset((cycle[i], cycle[(i + 1) % m])) in adj for i in range(m)) if m > 2 else 0
+
+    def fit(cycle: Sequence[str]) -> tuple[float, list[float]]:
+        # the even spacing of the cycle, either way round, turned to the start seeds' directions
+        m = len(cycle)
+        best: tuple[float, list[float]] = (-math.inf, [])
+        for way in (1, -1):
+            base = [way * 2 * math.pi * i / m for i in range(m)]
+            diffs = [angle[r] - a for r, a in zip(cycle, base)]
+            turn = math.atan2(sum(math.sin(d) for d in diffs), sum(math.cos(d) for d in diffs))
+            score = sum(math.cos(angle[r] - a - turn) for r, a in zip(cycle, base))
+            if score > best[0] + 1e-9:
+                best = (score, [a + turn for a in base])
+        return best
+
+    by_angle = sorted(others, key=lambda r: (angle[r], r))
+    if len(others) <= RING_EXHAUSTIVE:
+        cycles = [by_angle[:1] + list(rest) for rest in itertools.permutations(by_angle[1:])]
+    else:
+        # too many orders to try: adjacent swaps from the order of the start seeds' directions
+        cycle = list(by_angle)
+        improved = True
+        while improved:
+            improved = False
+            for i in range(len(cycle) - 1):
+                cand = cycle[:i] + [cycle[i + 1], cycle[i]] + cycle[i + 2 :]
+                if paired(cand) > paired(cycle):
+                    cycle, improved = cand, True
+        cycles = [cycle]
+    best_key: tuple[int, float] | None = None
+    chosen: tuple[list[str], list[float]] = (by_angle, [angle[r] for r in by_angle])
+    for cycle in cycles:
+        score, angles = fit(cycle)
+        key = (paired(cycle), score)
+        if best_key is None or key > (best_key[0], best_key[1] + 1e-9):
+            best_key, chosen = key, (list(cycle), angles)
+    taken = np.zeros(X.size, dtype=bool)
+
+    def nearest(tx: float, ty: float) -> int:
+        j = int(np.argmin((X - tx) ** 2 + (Y - ty) ** 2 + np.where(taken, 1e6, 0.0)))
+        taken[j] = True
+        return j
+
+    points = {ids[hub]: nearest(mx, my)}
+    rows, cols = mask.shape
+    for rid, a in zip(*chosen):
+        ux, uy = math.cos(a), math.sin(a)
+        t = 0.0
+        while True:
+            c, r = math.floor(mx + (t + 1) * ux), math.floor(my + (t + 1) * uy)
+            if not (0 <= r < rows and 0 <= c < cols and mask[r, c]):
+                break
+            t += 1
+        points[rid] = nearest(mx + reach * t * ux, my + reach * t * uy)
+    return {rid: free.centre_of(int(rr[points[rid]]), int(cc[points[rid]])) for rid in ids}
 
 
 def _honoured(
