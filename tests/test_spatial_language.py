@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 from mansion.cli import app
 from mansion.eval import evaluate_floorplans
 from mansion.planning.spatial_language import DIRECTIONS, KnownRoom, Reading, read_description
-from mansion.planning.spatial_seeds import FreeGrid, SeedRoom, match_rooms, place_seeds
+from mansion.planning.spatial_seeds import PROPORTION_CAP, FreeGrid, SeedRoom, match_rooms, place_seeds
 from synthetic_plans import make_plan, write_plans
 
 FLAT = [
@@ -515,14 +515,44 @@ def test_a_layout_whose_rooms_keep_their_stated_proportions_agrees_more() -> Non
         return disagreement_parts(reading, rooms, free, [], _Grid(labels, ids))["proportion"]
 
     # "wide by deep" says which way the sides run: the wide kitchen is right, the turned one is
-    # off by log 3 twice over (its 1 : 3 against the stated 3 : 1)
+    # off by log 3 twice over (its 1 : 3 against the stated 3 : 1), which counts as no more than a
+    # room twice off its proportions (PROPORTION_CAP)
     oriented = "The kitchen is approximately 12 feet wide by 4 feet deep."
     assert proportion(oriented, wide) == pytest.approx(0.0)
-    assert proportion(oriented, tall) == pytest.approx(2 * np.log(3))
+    assert proportion(oriented, tall) == pytest.approx(PROPORTION_CAP) == pytest.approx(np.log(2))
+    # within the cap the part is the log of the ratio of ratios: 6 : 2 drawn against 4 : 2 stated
+    assert proportion("The kitchen is approximately 8 feet wide by 4 feet deep.", wide) == pytest.approx(np.log(1.5))
     # "12' x 4'" does not: either way round agrees
     assert proportion("The kitchen is about 12' x 4'.", tall) == pytest.approx(0.0)
     # a text without sizes says nothing about proportions
     assert proportion("The kitchen is in the south.", tall) == 0.0
+
+
+def test_relations_in_the_wrong_order_are_counted_however_near() -> None:
+    from mansion.planning.spatial_seeds import disagreement_parts
+
+    free = FreeGrid(np.ones((4, 6), dtype=bool))
+    rooms = [SeedRoom("kitchen_2", "kitchen", 8.0), SeedRoom("living_room_0", "living_room", 16.0)]
+    ids = ["kitchen_2", "living_room_0"]
+    # the kitchen the two west columns, the living room the four east ones
+    west = np.ones((4, 6), dtype=np.int64)
+    west[:, :2] = 0
+    east = west[:, ::-1].copy()
+
+    def parts(text: str, labels: np.ndarray) -> dict[str, float]:
+        return disagreement_parts(read_description(text, FLAT), rooms, free, [], _Grid(labels, ids))
+
+    said = "The kitchen is west of the living room."
+    assert parts(said, west)["order"] == 0.0 and parts(said, west)["relation"] == 0.0
+    # the wrong way round: one relation out of order, and the graded part says by how much
+    assert parts(said, east)["order"] == 1.0 and parts(said, east)["relation"] > 0.0
+    # a corner relation needs both coordinates: the kitchen west of the living room but level
+    # with it is not "northwest of" it
+    assert parts("The kitchen is northwest of the living room.", west)["order"] == 1.0
+    # the same centroids are not in order either way (a tie is not north)
+    assert parts("The kitchen is north of the living room.", west)["order"] == 1.0
+    # sizes and positions say nothing about the order
+    assert parts("The kitchen is in the west. It is 6 feet by 12 feet.", east)["order"] == 0.0
 
 
 def test_text_seeds_are_solved_without_holding_rooms_to_them(text_plans: Path) -> None:
