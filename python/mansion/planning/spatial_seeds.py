@@ -616,8 +616,8 @@ MATCH_COMPASS = 0.5
 #: ground truth used only to score the choice) ``proportion`` capped per room at
 #: :data:`PROPORTION_CAP` with weight 0.25 → 0.5, and ``order`` (relations whose rooms' centroids
 #: are in the wrong order, counted) added at 0.5: odd ids 63.34 / 59.29 → 63.76 / 59.83, even
-#: 68.58 / 64.83 → 68.95 / 65.25 (either weight 0.35 – 0.7 with the other 0.3 – 0.7 raises both
-#: halves).
+#: 68.58 / 64.83 → 68.95 / 65.25 (of the nine pairs of weights 0.35 / 0.5 / 0.7 × 0.3 / 0.5 / 0.7,
+#: all but 0.7 / 0.3 raise both halves; runs, odd ids: 62.99 / 58.97 → 63.41 / 59.50).
 DISAGREEMENT_WEIGHTS: dict[str, float] = {
     "missing": 5.0, "area": 1.0, "position": 1.0, "exterior": 0.5, "centre": 0.5, "relation": 1.0, "adjacency": 0.5,
     "contact": 1.0, "shape": 2.0, "proportion": 0.5, "order": 0.5,
