@@ -252,3 +252,28 @@ def test_keep_first_round_leaves_the_walls_between_first_round_regions() -> None
         repaired += kept.grid.labels != plain.grid.labels
         walls_moved += sorted(first_round_walls(free, ruled)) != sorted(first_round_walls(plain, ruled))
     assert repaired >= 4 and walls_moved >= 2
+
+
+def test_rebalance_later_only_leaves_the_first_round_as_cut() -> None:
+    """With ``rebalance_later_only`` the rounds after the first are still rebalanced, but the
+    first round's regions stay as its cut left them (the walls between them do not move); a
+    rebalance of every round moves them on some floors."""
+    from mansion.building.load_bearing import first_round_walls
+
+    graph, footprint = office_floor()
+    edges = [e.model_copy(update={"source": "office_1"}) if e.target in ("phone", "copy") else e for e in graph.edges]
+    nodes = [n.model_copy(update={"area": 20.0}) if n.id == "office_1" else n for n in graph.nodes]
+    two_rounds = RoomGraph(nodes=nodes, edges=edges)
+    changed, moved = 0, 0
+    for seed in range(8):
+        plain = mansion.solve_floor(two_rounds, footprint, cell_size=CELL, rng_seed=seed)
+        later = mansion.solve_floor(
+            two_rounds, footprint, cell_size=CELL, rng_seed=seed,
+            settings={"rebalance": True, "rebalance_later_only": True},
+        )
+        every = mansion.solve_floor(two_rounds, footprint, cell_size=CELL, rng_seed=seed, settings={"rebalance": True})
+        check_layout(later, footprint, MASK)
+        assert sorted(first_round_walls(later, two_rounds)) == sorted(first_round_walls(plain, two_rounds))
+        changed += later.grid.labels != plain.grid.labels
+        moved += sorted(first_round_walls(every, two_rounds)) != sorted(first_round_walls(plain, two_rounds))
+    assert changed >= 1 and moved >= 1

@@ -76,7 +76,7 @@ from mansion.building.merge import (
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
-from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
+from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, mostly_narrower
 
 __all__ = ["hand_off_strips", "recut_narrow_rooms", "recut_unfit_rooms", "widen_passages"]
 
@@ -177,7 +177,7 @@ def recut_narrow_rooms(
         r = rooms[rid]
         if _wide_rectangle(r, building_type):
             return False
-        return "narrow" in shape_defects(Polygon(r.polygon, r.holes), r.room_type, building_type)
+        return mostly_narrower(Polygon(r.polygon, r.holes), needed_width(r.room_type, building_type))
 
     children: dict[str, list[str]] = {}
     for child, head in sorted(parent.items()):

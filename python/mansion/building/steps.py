@@ -57,7 +57,7 @@ from mansion.building.load_bearing import (
     first_round_walls,
     retarget_first_round,
 )
-from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms, shape_defects
+from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.building.stores import store_pockets
 from mansion.exceptions import InfeasibleLayoutError
@@ -65,7 +65,7 @@ from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
 from mansion.models.layout import LayoutRoom
 from mansion.models.building import Building, BuildingProgram, Floor, Palette, PositionWord, RoomCard
-from mansion.models.room_design import ELONGATED_ASPECT, room_design
+from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
 from mansion.models.room_shape import EPS, box_aspect, fits_square, mostly_narrower
 
 __all__ = [
@@ -203,12 +203,12 @@ def _widths_at_most(graph: RoomGraph, width: float | None) -> RoomGraph:
 def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSettings:
     """The solver settings of generated floors: the floor-wide minimum width (``width`` m,
     :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``, :data:`RESEEDS`, each round
-    rebalanced toward its targets, the corridor typology's layouts (:data:`SLABS`), each round's
+    but the first rebalanced toward its targets (:data:`REBALANCE_LATER_ONLY`), the corridor typology's layouts (:data:`SLABS`), each round's
     first retry at its rooms' full clear widths (:data:`WIDE_RETRIES`) and the repair of rooms
     left below their design minimums."""
     return SolverSettings(
         min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS, repair=True,
-        rebalance=True, slabs=SLABS, wide_retries=WIDE_RETRIES,
+        rebalance=True, rebalance_later_only=REBALANCE_LATER_ONLY, slabs=SLABS, wide_retries=WIDE_RETRIES,
     )
 
 
@@ -271,9 +271,21 @@ def _solve(
     )
 
 
+#: Whether generated floors leave their first round as cut by the rebalance (``SolverSettings.
+#: rebalance_later_only``): the zones keep what the cut gave them, the rooms cut from them are
+#: still brought toward their targets. The first round's rebalance moved a zone's rows from the
+#: hub one at a time, a sixth of the generation time; without it, on the offline hundreds (seeds
+#: 0-99 / 100-199), below width 138 / 116 -> 117 / 91, below area 7 / 14 -> 8 / 4, elongated
+#: 27 / 15 -> 22 / 10, for 45 / 65 rooms fewer (left out or merged, recorded) in 0.87 times the
+#: process time.
+REBALANCE_LATER_ONLY = True
+
 #: A floor laid out again without the rooms it could not fit draws this many times fewer
-#: candidates per retry than the first layout.
-RESOLVE_DIVISOR = 3
+#: candidates per retry than the first layout. Three until the floors with rooms below their
+#: width alone were laid out again too (:data:`RESOLVE_NARROW`); six costs 0.95 times the
+#: generation time for the same figures within a few rooms (seeds 0-99 / 100-199: below width
+#: 128 -> 130 / 119 -> 113, below area 7 / 13 -> 7 / 14, slivers 1 / 4 -> 2 / 4).
+RESOLVE_DIVISOR = 6
 
 #: Layouts tried, each under its own seed, for a floor laid out again without the rooms it could
 #: not fit, until one leaves fewer rooms unfit and no more elongated or slivers: the first is
@@ -338,6 +350,16 @@ def _unusable(unfit: dict[str, str]) -> int:
     return sum(why.endswith(f"no usable {USABLE_SIDE:g} m square") for why in unfit.values())
 
 
+def _box_sides(room: LayoutRoom) -> tuple[float, float] | None:
+    """The sides of ``room`` when it is an axis-aligned rectangle (two distinct x and two
+    distinct y among its corners, no hole), else None: most rooms, judged without shapely."""
+    if room.holes or len({x for x, _ in room.polygon}) != 2 or len({y for _, y in room.polygon}) != 2:
+        return None
+    xs = [x for x, _ in room.polygon]
+    ys = [y for _, y in room.polygon]
+    return max(xs) - min(xs), max(ys) - min(ys)
+
+
 def unfit_rooms(rooms: Iterable[LayoutRoom], graph: RoomGraph) -> dict[str, str]:
     """The laid-out ``rooms`` (a layout's; cores left out) below their node's ``min_area``, or
     with no usable square (:data:`USABLE_SIDE`), each with why."""
@@ -347,10 +369,15 @@ def unfit_rooms(rooms: Iterable[LayoutRoom], graph: RoomGraph) -> dict[str, str]
         node = nodes.get(room.id)
         if room.is_core or node is None:
             continue
-        shape = Polygon(room.polygon, room.holes)
-        if node.min_area is not None and shape.area < node.min_area - EPS:
-            out[room.id] = f"laid out at {shape.area:.1f} m², below its {node.min_area:g} m² minimum"
-        elif not fits_square(shape, USABLE_SIDE, inclusive=True):
+        sides = _box_sides(room)
+        if sides is not None:
+            area, square = sides[0] * sides[1], min(sides) >= USABLE_SIDE + 2 * EPS or None
+        else:
+            shape = Polygon(room.polygon, room.holes)
+            area, square = shape.area, None
+        if node.min_area is not None and area < node.min_area - EPS:
+            out[room.id] = f"laid out at {area:.1f} m², below its {node.min_area:g} m² minimum"
+        elif not (square or fits_square(Polygon(room.polygon, room.holes), USABLE_SIDE, inclusive=True)):
             out[room.id] = f"laid out with no usable {USABLE_SIDE:g} m square"
     return out
 
@@ -359,10 +386,17 @@ def narrow_rooms(rooms: Iterable[LayoutRoom], building_type: str | None) -> set[
     """The laid-out ``rooms`` (cores left out) below their clear width: ``mansion eval realism``'s
     "below its width", more than a tenth of the room narrower than its type's width (a corridor's,
     its building type's corridor width)."""
-    return {
-        room.id for room in rooms
-        if not room.is_core and "narrow" in shape_defects(Polygon(room.polygon, room.holes), room.room_type, building_type)
-    }
+    out: set[str] = set()
+    for room in rooms:
+        if room.is_core:
+            continue
+        need = needed_width(room.room_type, building_type)
+        sides = _box_sides(room)
+        if sides is not None and min(sides) >= need + 2 * EPS:
+            continue
+        if mostly_narrower(Polygon(room.polygon, room.holes), need):
+            out.add(room.id)
+    return out
 
 
 def smallest_narrow(rooms: Iterable[LayoutRoom], narrow: set[str]) -> dict[str, str]:
@@ -388,7 +422,9 @@ def misshapen(rooms: Iterable[LayoutRoom]) -> tuple[int, int]:
         shape = Polygon(room.polygon, room.holes)
         if not room_design(room.room_type).circulation:
             elongated += box_aspect(shape) > ELONGATED_ASPECT
-        slivers += mostly_narrower(shape, USABLE_SIDE, inclusive=True)
+        sides = _box_sides(room)
+        if sides is None or min(sides) < USABLE_SIDE + 2 * EPS:
+            slivers += mostly_narrower(shape, USABLE_SIDE, inclusive=True)
     return elongated, slivers
 
 
@@ -536,10 +572,14 @@ def solve_building_floor(
         # above follows (measured on the hundred: the offices above such floors gained slivers,
         # 0.1 → 1.2 %, for 4.1 → 2.6 % below area).
         unfit = unfit_rooms(layout.rooms, graph)
-        narrow = narrow_rooms(layout.rooms, program.building_type) if (unfit or RESOLVE_NARROW) else set()
+        # a floor whose layout backtracked is laid out again for rooms too small only: its
+        # layouts cost twice as much, and its rooms below their width alone gained a tenth of
+        # what the step gains for a third of its time
+        narrow_again = RESOLVE_NARROW and layout.diagnostics.backtracks == 0
+        narrow = narrow_rooms(layout.rooms, program.building_type) if (unfit or narrow_again) else set()
         spare = {**smallest_narrow(layout.rooms, narrow - set(unfit)), **unfit} if SPARE_NARROW else unfit
         fewer, dropped = leave_out(planned, spare, keep=asked) if (unfit or narrow) else (planned, [])
-        # a third of the candidates per retry: with rooms out the floor has area to spare, and
+        # a sixth of the candidates per retry: with rooms out the floor has area to spare, and
         # the full batch cost the hundred 1.4 times its generation time
         quick = {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
         shape = misshapen(layout.rooms) if dropped else (0, 0)  # the layout the new ones must match

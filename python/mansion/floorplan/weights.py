@@ -142,6 +142,9 @@ class SolverSettings(BaseModel):
     - ``rebalance``: after each round, its rooms below their targets take rows and columns from
       rooms of the round above theirs by the same moves and rules (a child seeded among
       siblings no longer leaves the parent holding its share). Generated floors turn it on.
+    - ``rebalance_later_only`` (with ``rebalance``): every round but the first, whose zones stay
+      as cut (the first round's rebalance moved a zone's rows from the hub one at a time, a
+      sixth of the offline hundred's generation time). Generated floors turn it on.
     - ``keep_first_round`` (with ``repair`` and ``rebalance``): the first round stays as cut and cells move only
       within one of its regions, so the walls between them stay where the cut put them
       (generated floors whose walls the floor above carries as load-bearing walls).
@@ -187,6 +190,7 @@ class SolverSettings(BaseModel):
     wide_retries: int = Field(default=0, ge=0)
     repair: bool = False
     rebalance: bool = False
+    rebalance_later_only: bool = False
     keep_first_round: bool = False
 
     @model_validator(mode="after")

@@ -37,10 +37,20 @@ def opening(shape: BaseGeometry, width: float, inclusive: bool = False) -> BaseG
     return shape.buffer(-r, join_style="mitre").buffer(r, join_style="mitre")
 
 
+def _wide_box(shape: BaseGeometry, width: float) -> bool:
+    """Whether ``shape`` is an axis-aligned rectangle at least a little over ``width`` each way:
+    then a square of that side covers all of it, told without buffering (most rooms are)."""
+    x0, y0, x1, y1 = shape.bounds
+    return (
+        min(x1 - x0, y1 - y0) >= width + 2 * EPS and shape.geom_type == "Polygon"
+        and not shape.interiors and abs(shape.area - (x1 - x0) * (y1 - y0)) < 1e-9
+    )
+
+
 def narrow_share(shape: BaseGeometry, width: float, inclusive: bool = False) -> float:
     """Share of ``shape``'s area in parts narrower than ``width`` (``inclusive``: or exactly
     that wide); 0 for an empty shape."""
-    if shape.area <= 0:
+    if shape.area <= 0 or _wide_box(shape, width):
         return 0.0
     return _narrow_share(shape.wkb, width, inclusive)
 
@@ -64,6 +74,8 @@ def mostly_narrower(shape: BaseGeometry, width: float, inclusive: bool = False) 
 def fits_square(shape: BaseGeometry, side: float, inclusive: bool = False) -> bool:
     """True when a ``side`` × ``side`` axis-aligned square (``inclusive``: a hair larger) fits
     inside ``shape``."""
+    if _wide_box(shape, side):
+        return True
     return _fits_square(shape.wkb, side, inclusive)
 
 
