@@ -17,7 +17,8 @@ for them: rooms it can do without (one of several wards, with its ensuite) are l
 floor is laid out again (:func:`leave_out`), and with them, of each type, the smallest room the
 layout left below its clear width (:data:`SPARE_NARROW`; never a room the description asked for);
 a floor with rooms below their clear width alone is laid out again without the smallest of each
-type of them, under one seed (:data:`RESOLVE_NARROW`). The new layout is kept when it leaves no more rooms unfit (nor without a usable square), fewer
+type of them, under one seed (:data:`RESOLVE_NARROW`). The new layout is kept when it leaves no
+more rooms unfit (nor without a usable square), fewer
 unfit or below their width in all, and no more elongated rooms or slivers (up to
 :data:`RESOLVE_SEEDS` layouts, each under its own seed, until one is), and each room left out is
 recorded on the
@@ -203,12 +204,13 @@ def _widths_at_most(graph: RoomGraph, width: float | None) -> RoomGraph:
 def floor_settings(cell_size: float, width: float = MIN_CLEAR_WIDTH) -> SolverSettings:
     """The solver settings of generated floors: the floor-wide minimum width (``width`` m,
     :data:`MIN_CLEAR_WIDTH` by default) in cells of ``cell_size``, :data:`RESEEDS`, each round
-    but the first rebalanced toward its targets (:data:`REBALANCE_LATER_ONLY`), the corridor typology's layouts (:data:`SLABS`), each round's
-    first retry at its rooms' full clear widths (:data:`WIDE_RETRIES`) and the repair of rooms
-    left below their design minimums."""
+    but the first rebalanced toward its targets (:data:`REBALANCE_LATER_ONLY`), the corridor
+    typology's layouts (:data:`SLABS`), each round's first retry at its rooms' full clear widths
+    (:data:`WIDE_RETRIES`) and the repair of rooms left below their design minimums."""
     return SolverSettings(
         min_width=max(1, math.ceil(width / cell_size - 1e-6)), reseeds=RESEEDS, repair=True,
-        rebalance=True, rebalance_later_only=REBALANCE_LATER_ONLY, slabs=SLABS, wide_retries=WIDE_RETRIES,
+        rebalance=True, rebalance_later_only=REBALANCE_LATER_ONLY, slabs=SLABS,
+        wide_retries=WIDE_RETRIES,
     )
 
 
@@ -626,20 +628,10 @@ def solve_building_floor(
         )
         if MERGE_NARROW:
             # what is below its width still merges or is dropped as a room too small is, where
-            # the merged room comes out at its width (two wards 2.5 m wide become one 5 m wide)
-            # each merge redraws two rooms: the others' shapes are judged once (the opening
-            # behind "narrow" was a tenth of the generation time of hospitals)
-            judged: dict[tuple[Any, ...], bool] = {}
-
+            # the merged room comes out at its width (two wards 2.5 m wide become one 5 m wide);
+            # each merge redraws two rooms, the others' measures come from room_shape's cache
             def narrow_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
-                out: dict[str, str] = {}
-                for room in lay.rooms:
-                    key = (room.id, room.room_type, tuple(room.polygon), tuple(map(tuple, room.holes)))
-                    if key not in judged:
-                        judged[key] = bool(narrow_rooms([room], program.building_type))
-                    if judged[key]:
-                        out[room.id] = NARROW_WHY
-                return out
+                return dict.fromkeys(narrow_rooms(lay.rooms, program.building_type), NARROW_WHY)
 
             layout, graph, merged = merge_unfit_rooms(
                 layout, graph, narrow_of, program.building_type,
