@@ -41,6 +41,7 @@ def test_default_options_match_the_binding_contract() -> None:
         "wide_retries": 0,
         "repair": False,
         "rebalance": False,
+        "rebalance_later_only": False,
         "keep_first_round": False,
     }
 
