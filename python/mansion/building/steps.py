@@ -352,16 +352,6 @@ def _unusable(unfit: dict[str, str]) -> int:
     return sum(why.endswith(f"no usable {USABLE_SIDE:g} m square") for why in unfit.values())
 
 
-def _box_sides(room: LayoutRoom) -> tuple[float, float] | None:
-    """The sides of ``room`` when it is an axis-aligned rectangle (two distinct x and two
-    distinct y among its corners, no hole), else None: most rooms, judged without shapely."""
-    if room.holes or len({x for x, _ in room.polygon}) != 2 or len({y for _, y in room.polygon}) != 2:
-        return None
-    xs = [x for x, _ in room.polygon]
-    ys = [y for _, y in room.polygon]
-    return max(xs) - min(xs), max(ys) - min(ys)
-
-
 def unfit_rooms(rooms: Iterable[LayoutRoom], graph: RoomGraph) -> dict[str, str]:
     """The laid-out ``rooms`` (a layout's; cores left out) below their node's ``min_area``, or
     with no usable square (:data:`USABLE_SIDE`), each with why."""
@@ -371,15 +361,10 @@ def unfit_rooms(rooms: Iterable[LayoutRoom], graph: RoomGraph) -> dict[str, str]
         node = nodes.get(room.id)
         if room.is_core or node is None:
             continue
-        sides = _box_sides(room)
-        if sides is not None:
-            area, square = sides[0] * sides[1], min(sides) >= USABLE_SIDE + 2 * EPS or None
-        else:
-            shape = Polygon(room.polygon, room.holes)
-            area, square = shape.area, None
-        if node.min_area is not None and area < node.min_area - EPS:
-            out[room.id] = f"laid out at {area:.1f} m², below its {node.min_area:g} m² minimum"
-        elif not (square or fits_square(Polygon(room.polygon, room.holes), USABLE_SIDE, inclusive=True)):
+        shape = Polygon(room.polygon, room.holes)
+        if node.min_area is not None and shape.area < node.min_area - EPS:
+            out[room.id] = f"laid out at {shape.area:.1f} m², below its {node.min_area:g} m² minimum"
+        elif not fits_square(shape, USABLE_SIDE, inclusive=True):
             out[room.id] = f"laid out with no usable {USABLE_SIDE:g} m square"
     return out
 
@@ -388,17 +373,11 @@ def narrow_rooms(rooms: Iterable[LayoutRoom], building_type: str | None) -> set[
     """The laid-out ``rooms`` (cores left out) below their clear width: ``mansion eval realism``'s
     "below its width", more than a tenth of the room narrower than its type's width (a corridor's,
     its building type's corridor width)."""
-    out: set[str] = set()
-    for room in rooms:
-        if room.is_core:
-            continue
-        need = needed_width(room.room_type, building_type)
-        sides = _box_sides(room)
-        if sides is not None and min(sides) >= need + 2 * EPS:
-            continue
-        if mostly_narrower(Polygon(room.polygon, room.holes), need):
-            out.add(room.id)
-    return out
+    return {
+        room.id for room in rooms
+        if not room.is_core
+        and mostly_narrower(Polygon(room.polygon, room.holes), needed_width(room.room_type, building_type))
+    }
 
 
 def smallest_narrow(rooms: Iterable[LayoutRoom], narrow: set[str]) -> dict[str, str]:
@@ -424,9 +403,7 @@ def misshapen(rooms: Iterable[LayoutRoom]) -> tuple[int, int]:
         shape = Polygon(room.polygon, room.holes)
         if not room_design(room.room_type).circulation:
             elongated += box_aspect(shape) > ELONGATED_ASPECT
-        sides = _box_sides(room)
-        if sides is None or min(sides) < USABLE_SIDE + 2 * EPS:
-            slivers += mostly_narrower(shape, USABLE_SIDE, inclusive=True)
+        slivers += mostly_narrower(shape, USABLE_SIDE, inclusive=True)
     return elongated, slivers
 
 
@@ -652,12 +629,11 @@ def solve_building_floor(
         )
         # the width mends move walls: a room still below its minimum area may now find a
         # rectangle the first recut could not (a dishwashing room beside its kitchen)
-        if unfit_of(layout, graph):
-            layout, again = recut_unfit_rooms(
-                layout, graph, unfit_of, program.building_type,
-                min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
-            )
-            mended += again
+        layout, recut_late = recut_unfit_rooms(
+            layout, graph, unfit_of, program.building_type,
+            min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+        )
+        mended += recut_late
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:

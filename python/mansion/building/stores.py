@@ -82,7 +82,6 @@ def _stored(
     after = mask_defects(keep, kind, building_type, cell)
     if "narrow" in after or not after <= before:
         return None
-    door = int(np.ceil(DOOR_WIDTH / cell - EPS))
     new = labels.copy()
     stores: list[tuple[str, float]] = []
     taken = set(ids)
@@ -93,11 +92,6 @@ def _stored(
         area = len(piece) * cell * cell
         if area > MAX_STORE + EPS or mask_defects(part, STORE_TYPE, building_type, cell):
             return None
-        # a door's width of wall between the store and what the room keeps
-        shared = int((part[1:, :] & keep[:-1, :]).sum() + (part[:-1, :] & keep[1:, :]).sum()
-                     + (part[:, 1:] & keep[:, :-1]).sum() + (part[:, :-1] & keep[:, 1:]).sum())
-        if shared < door:
-            return None
         n = 1
         while f"{room}_store_{n}" in taken:
             n += 1
@@ -106,6 +100,7 @@ def _stored(
         new[rows, cols] = len(ids) + len(stores)
         stores.append((sid, area))
     all_ids = ids + [sid for sid, _ in stores]
+    # every relation of the room keeps its wall, and each store has a door's width of it
     walls = _walls(new, all_ids, cell, _kept_walls(layout, graph, {room}), min_contact)
     if walls is None or any(
         walls.get(frozenset((room, sid)), (0.0, 0.0))[1] + EPS < max(DOOR_WIDTH, min_contact) for sid, _ in stores
