@@ -15,7 +15,7 @@ from test_min_width import office_floor
 from test_solver_properties import CELL, check_layout, instance
 
 import mansion
-from mansion import InfeasibleLayoutError, InvalidInputError, RoomGraph
+from mansion import Footprint, InfeasibleLayoutError, InvalidInputError, RoomGraph
 from mansion.building import generate_building
 from mansion.eval.realism import box_aspect, narrow_share
 from mansion.models.room_design import ELONGATED_ASPECT, corridor_width, room_design
@@ -226,17 +226,24 @@ def test_repair_and_rebalance_bring_generated_rooms_closer_to_the_table() -> Non
     assert elongated(both) <= elongated(repaired) <= elongated(plain)
 
 
+def office_in_two_rounds() -> tuple[RoomGraph, Footprint]:
+    """The office floor with the phone and copy room cut from the first office's region (a 20 m²
+    office): a floor cut in two rounds."""
+    graph, footprint = office_floor()
+    edges = [e.model_copy(update={"source": "office_1"}) if e.target in ("phone", "copy") else e for e in graph.edges]
+    nodes = [n.model_copy(update={"area": 20.0}) if n.id == "office_1" else n for n in graph.nodes]
+    return RoomGraph(nodes=nodes, edges=edges), footprint
+
+
 def test_keep_first_round_leaves_the_walls_between_first_round_regions() -> None:
     """With ``keep_first_round`` the repair still moves cells inside the first round's regions
     (the phone and copy room are cut from the first office's region here), but the walls
     between regions, which a floor above carries, do not move; without it they may."""
     from mansion.building.load_bearing import first_round_walls
 
-    graph, footprint = office_floor()
-    edges = [e.model_copy(update={"source": "office_1"}) if e.target in ("phone", "copy") else e for e in graph.edges]
-    nodes = [n.model_copy(update={"area": 20.0}) if n.id == "office_1" else n for n in graph.nodes]
+    graph, footprint = office_in_two_rounds()
     ruled = with_minimums(
-        RoomGraph(nodes=nodes, edges=edges),
+        graph,
         phone={"min_area": 4.0, "clear_width": 1.5},
         copy={"min_area": 6.0, "clear_width": 2.0},
     )
@@ -260,10 +267,7 @@ def test_rebalance_later_only_leaves_the_first_round_as_cut() -> None:
     rebalance of every round moves them on some floors."""
     from mansion.building.load_bearing import first_round_walls
 
-    graph, footprint = office_floor()
-    edges = [e.model_copy(update={"source": "office_1"}) if e.target in ("phone", "copy") else e for e in graph.edges]
-    nodes = [n.model_copy(update={"area": 20.0}) if n.id == "office_1" else n for n in graph.nodes]
-    two_rounds = RoomGraph(nodes=nodes, edges=edges)
+    two_rounds, footprint = office_in_two_rounds()
     changed, moved = 0, 0
     for seed in range(8):
         plain = mansion.solve_floor(two_rounds, footprint, cell_size=CELL, rng_seed=seed)
