@@ -435,7 +435,8 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
 def test_a_floor_with_rooms_below_their_width_alone_is_laid_out_again_without_one() -> None:
     """A floor whose rooms are all at their minimum area but some below their clear width is laid
     out again without the smallest of them of each type (``RESOLVE_NARROW``): the rooms named
-    in its notes are gone, and without the step the floor keeps them."""
+    in its notes are gone, and without the step (nor the narrow merge after it, which could merge
+    them away) the floor keeps them."""
     from mansion.building import steps
 
     for seed in range(12):
@@ -454,6 +455,7 @@ def test_a_floor_with_rooms_below_their_width_alone_is_laid_out_again_without_on
     gone = [n.split(" left out")[0] for n in floor.relaxations if _is_left_out(n)]
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "RESOLVE_NARROW", False)
+        mp.setattr(steps, "MERGE_NARROW", False)
         kept = _hospital(seed).floors[floor.index]
     assert not any(_is_left_out(n) for n in kept.relaxations)
     assert set(gone) <= {n.id for n in kept.graph.nodes}
@@ -512,9 +514,10 @@ def test_a_floor_laid_out_again_also_spares_a_room_below_its_width() -> None:
 def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow() -> None:
     """Each cut round of a generated floor first draws candidates with its rooms held to their
     full clear widths (``steps.WIDE_RETRIES``): the office of the second realism hundred's seed
-    117 has three open offices below their width without that retry (ten rooms before the
-    corridor typology chose each room's side and the open offices' bands took their full width)
-    and none with it, with no more rooms below their area or slivers."""
+    117 has two open offices below their width without that retry (three before a round's slab
+    layouts were ranked by their defects, ten before the corridor typology chose each room's
+    side and the open offices' bands took their full width) and none with it, with no more
+    rooms below their area or slivers."""
     from mansion.building import steps
     from mansion.eval.realism import bench_case, building_rooms, summarise
 
@@ -524,7 +527,7 @@ def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow(
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "WIDE_RETRIES", 0)
         capped = summarise(building_rooms(generate_building(description, building_type=kind, floors=floors, seed=117)))
-    assert capped.below_width >= 3
+    assert capped.below_width >= 2
     assert wide.below_width < capped.below_width
     assert wide.below_area <= capped.below_area and wide.sliver <= capped.sliver and wide.no_square == 0
 

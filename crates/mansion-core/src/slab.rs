@@ -133,8 +133,11 @@ const FREE_ZONE_ASPECT: f64 = 1.5;
 /// Single-corridor positions tried per axis, best matched first: a region's notches leave some
 /// of them with strips the width rules reject. Eight, not five, since the children are split
 /// between the bands freely: rooms below their width 237 -> 221 on the realism hundred (197 ->
-/// 179 on the second) for 1.04 times the generation time; twelve gave 221 / 183.
-const VARIANTS: usize = 8;
+/// 179 on the second) for 1.04 times the generation time; twelve gave 221 / 183 then. Twelve
+/// since the round's slabs are ranked by their rooms below their width, elongated or off their
+/// targets (`cut::slab_defects`), where more positions give the ranking more to choose from
+/// (figures in the README's realism section); sixteen or every position gave no more.
+const VARIANTS: usize = 12;
 /// Two-corridor layouts tried per axis (the cross corridor at either end).
 const DOUBLE_VARIANTS: usize = 2;
 
@@ -508,7 +511,14 @@ impl Frame {
                         .any(|&n| grid.cells[n] == other)
                 })
                 .collect();
-            if touching.iter().any(|&c| grid.cells[c] == parent) {
+            // a corridor that already shares a wall as long as the contact rule asks needs no
+            // stub; one touching the other room by a cell's side only (a corridor band ending
+            // at a lift's corner) gets one, or the candidate filter would reject the layout
+            let held = touching
+                .iter()
+                .filter(|&&c| grid.cells[c] == parent)
+                .count();
+            if held >= (p.opts.min_contact as usize).max(1) {
                 continue;
             }
             // the contact cell nearest a corridor, and that corridor
@@ -531,7 +541,7 @@ impl Frame {
             };
             let (ue, ve) = axis.uv(end, w);
             let (_, vc) = gap(end);
-            if corridor(ve) {
+            if held == 0 && corridor(ve) {
                 // a notch of a corridor left to the rooms: its rows from the contact to the
                 // nearest column where it is whole
                 let n = plan.corridors.iter().position(|&x| x == vc).unwrap_or(0);
@@ -574,6 +584,9 @@ impl Frame {
                 .filter(|&c| !corridor(axis.uv(c, w).1))
                 .collect();
             contacts.sort_by_key(|&c| (gap(c), c));
+            if held > 0 && contacts.is_empty() {
+                continue; // nowhere beside the corridor's rows to lengthen the contact
+            }
             let (ve, vc, us) = contacts
                 .iter()
                 .find_map(|&c| {
@@ -983,7 +996,8 @@ mod tests {
         let mut passed = 0;
         for g in layouts {
             // the candidate filter wants the corridor to share a wall with the lift: no layout
-            // loses its stub to the cleanup (before, 4 of the 10 that pass now did)
+            // loses its stub to the cleanup (before, 4 of the 10 that pass now did), and a
+            // corridor band that meets the lift's corner by one cell gets a stub as well
             match p.finish(g, &mut s) {
                 Err(crate::cut::Reject::Adjacency(0, 5)) => panic!("a stub lost to the cleanup"),
                 Err(_) => {}
