@@ -903,8 +903,9 @@ pub fn cut(
     let finish = |best: Survivor, retry, candidates, rejected| {
         finish_in(&p, best, retry, candidates, rejected)
     };
-    // the corridor typology's layouts, finished like any candidate; the best survivor competes
-    // with each retry's best by energy. A round cut again because a later round could not be cut
+    // the corridor typology's layouts, finished like any candidate; the best of them
+    // ([`best_slab`]) competes with each retry's best on its rooms below their width, then by
+    // energy. A round cut again because a later round could not be cut
     // in what it left (a backtrack) does not offer them again: they are the layouts it offered
     // the first time, and a slab that won then would win again (a mall's toilet cluster left
     // too narrow by the concourse's slabs, the floor re-cut to the same end until its rules were
@@ -1131,7 +1132,7 @@ fn best_slab(
 /// went on to compete with the grown winner was often not the one with the fewest narrow rooms.
 /// Measured on the offline hundreds (seeds 0-99 / 100-199), against energy alone: rooms below
 /// their width 117 / 91 -> 114 / 77, elongated 22 / 10 -> 25 / 13, below area 8 / 4 -> 10 / 6,
-/// rooms more than 30 % off their planned areas 916 / 934 -> 912 / 946, in about 1.03 times the
+/// rooms more than 30 % off their planned areas 916 / 934 -> 912 / 946, in 1.01 to 1.03 times the
 /// generation time. Narrow rooms alone: 110 / 74 below width, but 38 / 18 elongated; with the
 /// elongated, 110 / 74 and 20 / 12, but 959 / 983 rooms more than 30 % off (a staff kitchen laid
 /// at 8 m² of its 11.6 beside an office at twice its 14.8).
