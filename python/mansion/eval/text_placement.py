@@ -59,7 +59,8 @@ TEXT_ENERGY = EnergyWeights().model_copy(update={"drift": 0.0, "wall": 1.2, "rec
 #: → 55.0 under this energy alone; but the whole setting under it alone, odd ids 63.56 / 59.66 →
 #: 64.80 / 61.35 and even 68.67 / 64.85 → 68.55 / 64.90 (wall and rect 1.5: even 68.60 / 64.85);
 #: under both energies, one random seed each: odd 64.32 / 60.81, even 68.85 / 65.06, all 500
-#: 66.07 / 62.20 → 66.54 / 62.90, for the same number of solves.
+#: 66.07 / 62.20 → 66.54 / 62.90, for the same number of solves (wall 2.5 and rect 3: odd 64.13 /
+#: 60.57, even 68.99 / 65.45).
 TEXT_ENERGY_SHAPED = TEXT_ENERGY.model_copy(update={"wall": 2.0, "rect": 2.0, "aspect": 1.0})
 
 
