@@ -567,6 +567,36 @@ def test_text_seeds_are_solved_without_holding_rooms_to_them(text_plans: Path) -
     assert evaluate_floorplans(text_plans, workers=1, limit=1).weights == EnergyWeights()
 
 
+def test_the_solves_under_the_second_random_seed_use_the_shaped_energy(
+    text_plans: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from mansion.eval import floorplan
+    from mansion.eval.text_placement import TEXT_ENERGY, TEXT_ENERGY_SHAPED, text_energy
+    from mansion.floorplan import EnergyWeights
+
+    # walls, filled boxes and elongation count more than in the text setting's energy
+    assert TEXT_ENERGY_SHAPED.wall > TEXT_ENERGY.wall and TEXT_ENERGY_SHAPED.rect > TEXT_ENERGY.rect
+    assert TEXT_ENERGY_SHAPED.aspect > TEXT_ENERGY.aspect and TEXT_ENERGY_SHAPED.drift == 0.0
+    assert [text_energy(k, TEXT_ENERGY) for k in range(4)] == [TEXT_ENERGY, TEXT_ENERGY_SHAPED] * 2
+    # weights given are used as given, under every random seed
+    given_w = EnergyWeights()
+    assert [text_energy(k, given_w) for k in range(4)] == [given_w] * 4
+
+    used: list[tuple[int, EnergyWeights]] = []
+    solve = floorplan.solve_plan
+
+    def recording(plan, *, rng_seed=0, weights=None, **kw):
+        used.append((rng_seed, weights))
+        return solve(plan, rng_seed=rng_seed, weights=weights, **kw)
+
+    monkeypatch.setattr(floorplan, "solve_plan", recording)
+    evaluate_floorplans(text_plans, seeds="text", workers=1, limit=1, rng_seed=4)
+    odd = [w for s, w in used if s % 2 == 1]
+    even = [w for s, w in used if s % 2 == 0]
+    assert odd and all(w == TEXT_ENERGY_SHAPED for w in odd)
+    assert even and all(w == TEXT_ENERGY for w in even)
+
+
 def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: pytest.MonkeyPatch) -> None:
     from mansion.eval import text_placement
     from mansion.eval.t2d import T2DPlan, node_id
