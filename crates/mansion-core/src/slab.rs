@@ -1008,6 +1008,39 @@ mod tests {
     }
 
     #[test]
+    fn a_corridor_meeting_a_core_at_its_corner_gets_a_stub() {
+        // the wing beside the lift, its corridor at rows 8..11: the lift fills rows 5..=8 at
+        // x 1..=4, so the corridor's first row meets it by one cell's side at (5, 8), half the
+        // contact rule's two cells. A stub up the lift's east side must lengthen the contact.
+        let (grid, spec) = wing_beside_a_lift();
+        let walls = Walls::none(grid.w, grid.h);
+        let opts = options(true);
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        let frame = Frame::of(&p, 0, Axis::X).expect("a frame");
+        let (v0, v1) = (frame.v0, frame.v1);
+        assert_eq!(grid.cells[8 * grid.w + 4], 5, "the lift's top row is row 8");
+        assert_ne!(grid.cells[9 * grid.w + 4], 5);
+        let plan = Plan {
+            corridors: vec![8],
+            bands: vec![(v0, 8), (11, v1 + 1)],
+            cross: None,
+        };
+        let groups = vec![vec![0, 1], vec![2, 3]];
+        let g = frame
+            .lay(&p, &opts.clear, 0, 3, &plan, &groups)
+            .expect("laid out");
+        // the corridor's cells beside the lift: more than the one its band gives
+        let beside = (0..g.cells.len())
+            .filter(|&c| g.cells[c] == 0 && p.region.neighbours(c).iter().any(|&n| g.cells[n] == 5))
+            .count();
+        assert!(beside >= 2, "{beside} cell(s) of corridor beside the lift");
+        let mut s = crate::cleanup::Scratch::new(grid.cells.len());
+        if let Err(crate::cut::Reject::Adjacency(0, 5)) = p.finish(g, &mut s) {
+            panic!("the corridor lost the lift");
+        }
+    }
+
+    #[test]
     fn a_band_shallower_than_a_room_beside_the_corridor_widens_the_corridor() {
         // the wing with its south-east corner cut away (outside): south of a corridor at rows
         // 8..11 the band is 7 rows deep for x < 17 and 2 rows deep beyond
