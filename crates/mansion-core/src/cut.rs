@@ -911,15 +911,14 @@ pub fn cut(
     // too narrow by the concourse's slabs, the floor re-cut to the same end until its rules were
     // lowered to 1 m)
     let recut = (round >> RECUT_SHIFT) > 0;
-    let slab: Option<Survivor> = if opts.slabs && !recut {
+    let (slab, slab_narrow) = if opts.slabs && !recut {
         let layouts = crate::slab::layouts(&p, &opts.clear);
-        best_slab(&p, layouts, &mut candidates, &mut rejected)
+        best_slab(&p, layouts, &mut candidates, &mut rejected).unzip()
     } else {
-        None
+        (None, None)
     };
     // a slab layout wins over a grown one with fewer rooms below their clear width (a band of
     // classrooms 4.5 m deep beside a corridor that kept what no classroom reached), else by energy
-    let slab_narrow = slab.as_ref().map(|s| narrow_rooms(&p, &s.2));
     let with_slab = |b: Survivor| match (&slab, slab_narrow) {
         (Some(s), Some(n)) => {
             let m = narrow_rooms(&p, &b.2);
@@ -1092,7 +1091,8 @@ pub fn narrow_rooms(p: &Prepared, grid: &Grid) -> usize {
 /// defects ([`slab_defects`]), as a share of the target.
 const SLAB_AREA_MISS: f64 = 0.3;
 
-/// The slab layout of a round that competes with its grown winner: among those the candidate
+/// The slab layout of a round that competes with its grown winner, with its rooms below their
+/// clear width ([`narrow_rooms`], which the competition judges it by): among those the candidate
 /// filter passes whose finished rooms are usable, the fewest [`slab_defects`] first, then the
 /// lowest energy, then the first. Counts each layout in `candidates` and each rejection.
 fn best_slab(
@@ -1100,9 +1100,10 @@ fn best_slab(
     layouts: Vec<Grid>,
     candidates: &mut usize,
     rejected: &mut BTreeMap<String, usize>,
-) -> Option<Survivor> {
+) -> Option<(Survivor, usize)> {
     let mut s = Scratch::new(p.base.cells.len());
-    let mut best: Option<(usize, Survivor)> = None;
+    // (defects, narrow rooms, the layout)
+    let mut best: Option<(usize, usize, Survivor)> = None;
     for (i, g) in layouts.into_iter().enumerate() {
         *candidates += 1;
         match p.finish(g, &mut s) {
@@ -1112,23 +1113,24 @@ fn best_slab(
                     .or_insert(0) += 1
             }
             Ok((e, g, f)) => {
-                let n = slab_defects(p, &g, &f);
+                let narrow = narrow_rooms(p, &g);
+                let n = narrow + slab_defects(p, &f);
                 if best
                     .as_ref()
-                    .is_none_or(|(m, b)| n < *m || (n == *m && e < b.0))
+                    .is_none_or(|(m, _, b)| n < *m || (n == *m && e < b.0))
                 {
-                    best = Some((n, (e, usize::MAX - i, g, f)));
+                    best = Some((n, narrow, (e, usize::MAX - i, g, f)));
                 }
             }
             Err(why) => *rejected.entry(why.describe(&p.spec.names)).or_insert(0) += 1,
         }
     }
-    best.map(|(_, b)| b)
+    best.map(|(_, narrow, b)| (b, narrow))
 }
 
-/// What ranks a round's slab layouts before their energy: its rooms below their clear width
-/// ([`narrow_rooms`]), its rooms whose box is longer than 3 : 1 and its finished rooms (not the
-/// leftover) more than [`SLAB_AREA_MISS`] off their targets. Ranked by energy alone, the slab that
+/// What ranks a round's slab layouts before their energy, beside their rooms below their clear
+/// width ([`narrow_rooms`], counted by [`best_slab`]): their rooms whose box is longer than 3 : 1
+/// and their finished rooms (not the leftover) more than [`SLAB_AREA_MISS`] off their targets. Ranked by energy alone, the slab that
 /// went on to compete with the grown winner was often not the one with the fewest narrow rooms.
 /// Measured on the offline hundreds (seeds 0-99 / 100-199), against energy alone: rooms below
 /// their width 117 / 91 -> 114 / 77, elongated 22 / 10 -> 25 / 13, below area 8 / 4 -> 10 / 6,
@@ -1136,7 +1138,7 @@ fn best_slab(
 /// generation time. Narrow rooms alone: 110 / 74 below width, but 38 / 18 elongated; with the
 /// elongated, 110 / 74 and 20 / 12, but 959 / 983 rooms more than 30 % off (a staff kitchen laid
 /// at 8 m² of its 11.6 beside an office at twice its 14.8).
-fn slab_defects(p: &Prepared, grid: &Grid, feats: &[RoomFeatures]) -> usize {
+fn slab_defects(p: &Prepared, feats: &[RoomFeatures]) -> usize {
     let parent = p.spec.remainder.map(|(l, _)| l);
     let off = p
         .labels
@@ -1149,7 +1151,7 @@ fn slab_defects(p: &Prepared, grid: &Grid, feats: &[RoomFeatures]) -> usize {
                 && (f.area as f64 - t).abs() > SLAB_AREA_MISS * t
         })
         .count();
-    narrow_rooms(p, grid) + feats.iter().filter(|f| f.aspect > 0.0).count() + off
+    feats.iter().filter(|f| f.aspect > 0.0).count() + off
 }
 
 /// How far a round's rooms are from compact rectangles: their elongation beyond 3 : 1 and their
@@ -1436,8 +1438,9 @@ mod tests {
         let mut s = Scratch::new(base.cells.len());
         let (e_strip, g_strip, f_strip) = p.finish(strip.clone(), &mut s).expect("strip passes");
         let (e_short, g_short, f_short) = p.finish(short.clone(), &mut s).expect("short passes");
-        assert_eq!(slab_defects(&p, &g_strip, &f_strip), 2);
-        assert_eq!(slab_defects(&p, &g_short, &f_short), 0);
+        let defects = |g: &Grid, f: &[RoomFeatures]| narrow_rooms(&p, g) + slab_defects(&p, f);
+        assert_eq!(defects(&g_strip, &f_strip), 2);
+        assert_eq!(defects(&g_short, &f_short), 0);
         // the energy alone would keep the strip
         assert!(e_strip < e_short, "{e_strip} >= {e_short}");
         for layouts in [
@@ -1445,9 +1448,9 @@ mod tests {
             vec![short.clone(), strip.clone()],
         ] {
             let (mut n, mut why) = (0, BTreeMap::new());
-            let kept = best_slab(&p, layouts, &mut n, &mut why).expect("a slab");
+            let (kept, narrow) = best_slab(&p, layouts, &mut n, &mut why).expect("a slab");
             assert_eq!(kept.2.cells, g_short.cells);
-            assert_eq!(n, 2);
+            assert_eq!((narrow, n), (0, 2));
         }
         // a room far off its target counts too: room 1 as a 4 x 4 block, nearly half short
         let tiny = parse_rows(&[
@@ -1461,9 +1464,9 @@ mod tests {
             "2222000000",
         ]);
         let (_, g_tiny, f_tiny) = p.finish(tiny.clone(), &mut s).expect("tiny passes");
-        assert_eq!(slab_defects(&p, &g_tiny, &f_tiny), 1);
+        assert_eq!(defects(&g_tiny, &f_tiny), 1);
         let (mut n, mut why) = (0, BTreeMap::new());
-        let kept = best_slab(
+        let (kept, _) = best_slab(
             &p,
             vec![tiny, strip.clone(), short.clone()],
             &mut n,
@@ -1473,7 +1476,7 @@ mod tests {
         assert_eq!(kept.2.cells, g_short.cells);
         // between layouts with as few defects, the lower energy, then the first
         let (mut n, mut why) = (0, BTreeMap::new());
-        let kept =
+        let (kept, _) =
             best_slab(&p, vec![short.clone(), short.clone()], &mut n, &mut why).expect("a slab");
         assert_eq!(kept.1, usize::MAX);
     }
