@@ -235,29 +235,41 @@ def office_in_two_rounds() -> tuple[RoomGraph, Footprint]:
     return RoomGraph(nodes=nodes, edges=edges), footprint
 
 
+def _first_round_kept(
+    graph: RoomGraph, footprint: Footprint, keeping: dict[str, bool], moving: dict[str, bool]
+) -> tuple[int, int]:
+    """``graph`` solved under seeds 0-7 with no pass, under the ``keeping`` settings and under
+    the ``moving`` ones: each layout under ``keeping`` is valid and keeps the plain layout's
+    first-round walls (asserted); returns how many of them differ from the plain layout at all,
+    and on how many seeds ``moving`` moved the first-round walls."""
+    from mansion.building.load_bearing import first_round_walls
+
+    changed, moved = 0, 0
+    for seed in range(8):
+        plain = mansion.solve_floor(graph, footprint, cell_size=CELL, rng_seed=seed)
+        kept = mansion.solve_floor(graph, footprint, cell_size=CELL, rng_seed=seed, settings=keeping)
+        free = mansion.solve_floor(graph, footprint, cell_size=CELL, rng_seed=seed, settings=moving)
+        check_layout(kept, footprint, MASK)
+        walls = sorted(first_round_walls(plain, graph))
+        assert sorted(first_round_walls(kept, graph)) == walls
+        changed += kept.grid.labels != plain.grid.labels
+        moved += sorted(first_round_walls(free, graph)) != walls
+    return changed, moved
+
+
 def test_keep_first_round_leaves_the_walls_between_first_round_regions() -> None:
     """With ``keep_first_round`` the repair still moves cells inside the first round's regions
     (the phone and copy room are cut from the first office's region here), but the walls
     between regions, which a floor above carries, do not move; without it they may."""
-    from mansion.building.load_bearing import first_round_walls
-
     graph, footprint = office_in_two_rounds()
     ruled = with_minimums(
         graph,
         phone={"min_area": 4.0, "clear_width": 1.5},
         copy={"min_area": 6.0, "clear_width": 2.0},
     )
-    repaired, walls_moved = 0, 0
-    for seed in range(8):
-        plain = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed)
-        kept = mansion.solve_floor(
-            ruled, footprint, cell_size=CELL, rng_seed=seed, settings={"repair": True, "keep_first_round": True}
-        )
-        free = mansion.solve_floor(ruled, footprint, cell_size=CELL, rng_seed=seed, settings={"repair": True})
-        check_layout(kept, footprint, MASK)
-        assert sorted(first_round_walls(kept, ruled)) == sorted(first_round_walls(plain, ruled))
-        repaired += kept.grid.labels != plain.grid.labels
-        walls_moved += sorted(first_round_walls(free, ruled)) != sorted(first_round_walls(plain, ruled))
+    repaired, walls_moved = _first_round_kept(
+        ruled, footprint, {"repair": True, "keep_first_round": True}, {"repair": True}
+    )
     assert repaired >= 4 and walls_moved >= 2
 
 
@@ -265,19 +277,8 @@ def test_rebalance_later_only_leaves_the_first_round_as_cut() -> None:
     """With ``rebalance_later_only`` the rounds after the first are still rebalanced, but the
     first round's regions stay as its cut left them (the walls between them do not move); a
     rebalance of every round moves them on some floors."""
-    from mansion.building.load_bearing import first_round_walls
-
     two_rounds, footprint = office_in_two_rounds()
-    changed, moved = 0, 0
-    for seed in range(8):
-        plain = mansion.solve_floor(two_rounds, footprint, cell_size=CELL, rng_seed=seed)
-        later = mansion.solve_floor(
-            two_rounds, footprint, cell_size=CELL, rng_seed=seed,
-            settings={"rebalance": True, "rebalance_later_only": True},
-        )
-        every = mansion.solve_floor(two_rounds, footprint, cell_size=CELL, rng_seed=seed, settings={"rebalance": True})
-        check_layout(later, footprint, MASK)
-        assert sorted(first_round_walls(later, two_rounds)) == sorted(first_round_walls(plain, two_rounds))
-        changed += later.grid.labels != plain.grid.labels
-        moved += sorted(first_round_walls(every, two_rounds)) != sorted(first_round_walls(plain, two_rounds))
+    changed, moved = _first_round_kept(
+        two_rounds, footprint, {"rebalance": True, "rebalance_later_only": True}, {"rebalance": True}
+    )
     assert changed >= 1 and moved >= 1
