@@ -284,6 +284,23 @@ def width_squares(
     return labels, ids, mask, before, keep
 
 
+def sound_body(
+    layout: FloorLayout, room: str, nodes: dict[str, RoomNode], building_type: str | None,
+) -> tuple[np.ndarray, list[str], np.ndarray, np.ndarray] | None:
+    """For ``room`` below its clear width whose width's squares make a sound room (one piece, at
+    its minimum area or what it has, no longer below its width and with no realism defect the
+    room lacks): (the layout's labels, their ids, the room's cells, the cells those squares
+    cover); else None. What the squares leave is what a mend gives away or makes a room of."""
+    found = width_squares(layout, room, nodes, building_type)
+    if found is None:
+        return None
+    labels, ids, mask, before, keep = found
+    after = mask_defects(keep, layout.room(room).room_type, building_type, layout.grid.cell_size)
+    if "narrow" in after or not after <= before:
+        return None
+    return labels, ids, mask, keep
+
+
 def _handed_off(
     layout: FloorLayout,
     graph: RoomGraph,
@@ -966,36 +983,13 @@ def _relaid_cluster(
         strip = np.zeros_like(view)
         strip[rows[0]:rows[0] + depth] = view[rows[0]:rows[0] + depth]
         band = view & ~strip
-        cols = np.nonzero(band.any(axis=0))[0]
-        if len(cols) < len(members):
+        shares = band_shares(band, members, least, targets, cell)
+        if shares is None:
             continue
-        cum = band[:, cols].sum(axis=0).cumsum()
-        # each member its minimum, and what the band holds beyond the minimums in proportion to
-        # what its planned area asks beyond its own
-        room_left = cum[-1] * cell * cell - sum(least[m] for m in members)
-        extra = sum(targets[m] - least[m] for m in members)
-        if room_left < 0:
-            continue
-        scale = min(1.0, room_left / extra) if extra > 0 else 0.0
-        want = {m: least[m] + (targets[m] - least[m]) * scale for m in members}
-        spare = (room_left - sum(want[m] - least[m] for m in members)) / len(members)
         for order in itertools.permutations(members):
-            ends, share = [], 0.0
-            for m in order[:-1]:
-                share += want[m] + spare
-                ends.append(int(np.searchsorted(cum, share / (cell * cell) - EPS)))
-            ends.append(len(cols) - 1)
             turned = np.rot90(labels, turn).copy()
             turned[strip] = keys[head]
-            start = 0
-            for m, stop in zip(order, ends):
-                if stop < start:
-                    break
-                piece = np.zeros_like(view)
-                piece[:, cols[start:stop + 1]] = True
-                turned[band & piece] = keys[m]
-                start = stop + 1
-            else:
+            if in_a_row(turned, band, order, shares, keys, cell):
                 new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
                 found = _judged(
                     layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact,
@@ -1003,6 +997,49 @@ def _relaid_cluster(
                 if found is not None and (best is None or found[0] < best[0] - EPS):
                     best = found
     return best
+
+
+def band_shares(
+    band: np.ndarray, members: list[str], least: dict[str, float], targets: dict[str, float], cell: float,
+) -> dict[str, float] | None:
+    """Each of ``members``' share (m²) of the cells of ``band``, laid side by side along it: its
+    minimum area, and what the band holds beyond the minimums in proportion to what its planned
+    area asks beyond its own, the rest spread evenly; None when the band holds fewer columns than
+    the members or less than their minimums."""
+    columns = int(band.any(axis=0).sum())
+    room_left = float(band.sum()) * cell * cell - sum(least[m] for m in members)
+    if columns < len(members) or room_left < 0:
+        return None
+    extra = sum(targets[m] - least[m] for m in members)
+    scale = min(1.0, room_left / extra) if extra > 0 else 0.0
+    want = {m: least[m] + (targets[m] - least[m]) * scale for m in members}
+    spare = (room_left - sum(want[m] - least[m] for m in members)) / len(members)
+    return {m: w + spare for m, w in want.items()}
+
+
+def in_a_row(
+    turned: np.ndarray, band: np.ndarray, order: tuple[str, ...], shares: dict[str, float],
+    keys: dict[str, int], cell: float,
+) -> bool:
+    """Label the cells of ``band`` in ``turned`` (in place) with ``order``'s rooms side by side,
+    each a run of whole columns holding about its share (:func:`band_shares`), the last the
+    rest; False (``turned`` then half written) when a room would get no column."""
+    cols = np.nonzero(band.any(axis=0))[0]
+    cum = band[:, cols].sum(axis=0).cumsum()
+    ends, share = [], 0.0
+    for m in order[:-1]:
+        share += shares[m]
+        ends.append(int(np.searchsorted(cum, share / (cell * cell) - EPS)))
+    ends.append(len(cols) - 1)
+    start = 0
+    for m, stop in zip(order, ends):
+        if stop < start:
+            return False
+        piece = np.zeros_like(band)
+        piece[:, cols[start:stop + 1]] = True
+        turned[band & piece] = keys[m]
+        start = stop + 1
+    return True
 
 
 def _judged(
@@ -1016,11 +1053,14 @@ def _judged(
     passable: dict[str, tuple[int, int]],
     building_type: str | None,
     min_contact: float,
+    own: bool = False,
 ) -> tuple[float, FloorLayout] | None:
-    """(the cluster's total miss, the layout) of a re-laid cluster when it passes the rules: every
-    room in one piece, at its minimum area, with a usable square, no new part one cell wide, and
-    every relation keeping its wall; fewer defects over the cluster, or as many where a room of
-    it was unusable before."""
+    """(the cluster's defects, then its total miss; the layout) of a re-laid cluster when it
+    passes the rules: every room in one piece, at its minimum area, with a usable square, no new
+    part one cell wide, and every relation keeping its wall; fewer defects over the cluster, or
+    as many where a room of it was unusable before. With ``own`` (a family re-laid for a room of
+    it below its width, :mod:`mansion.building.families`), no room may gain a defect it lacked
+    and the defects must be fewer."""
     grid = layout.grid
     ids = list(grid.ids)
     layout_types = {r.id: r.room_type for r in layout.rooms}
@@ -1038,7 +1078,7 @@ def _judged(
     for rid in cluster:
         mask = new == ids.index(rid)
         found = mask_defects(mask, layout_types[rid], building_type, grid.cell_size)
-        if "unusable" in found:
+        if "unusable" in found or (own and not found <= before[rid]):
             return None
         defects += len(found)
         miss += abs(mask.sum() * grid.cell_size ** 2 - targets[rid])
@@ -1046,6 +1086,6 @@ def _judged(
     # a little narrow instead of one without a 1 m square, narrow and a sliver)
     was = sum(len(d) for d in before.values())
     was_unusable = any("unusable" in d for d in before.values())
-    if defects > was or (defects == was and not was_unusable):
+    if defects > was or (defects == was and (own or not was_unusable)):
         return None
     return defects * 1e3 + miss, _redrawn(layout, new)

@@ -58,6 +58,8 @@ from mansion.building.load_bearing import (
     first_round_walls,
     retarget_first_round,
 )
+from mansion.building.families import relay_families
+from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.building.stores import store_pockets
@@ -326,6 +328,15 @@ MERGE_NARROW = True
 #: (:func:`mansion.building.stores.store_pockets`). Measured on the offline hundreds: below width
 #: 176 -> 162 (25 stores; malls 97 and 55 hold 22 of them), second hundred 134 -> 133.
 STORE_POCKETS = True
+#: The mends of rooms still below their width, in order: "families" (a region and the rooms cut
+#: from it laid out again as a row, :func:`mansion.building.families.relay_families`), "merges"
+#: (:data:`MERGE_NARROW`), "stores" (:data:`STORE_POCKETS`), "halls" (:data:`HALL_ARMS`),
+#: "drops" (a family too tight for its rooms laid out again without one).
+NARROW_MENDS = ("families", "stores", "halls", "merges", "drops")
+#: Whether a room below its width because arms of it run to the rooms it serves (a play hall's
+#: arm to its sleep room) keeps the arms as halls off it
+#: (:func:`mansion.building.halls.hall_arms`).
+HALL_ARMS = True
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
 
@@ -603,25 +614,50 @@ def solve_building_floor(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
             same_region=program.load_bearing_walls,
         )
-        if MERGE_NARROW:
+        contact = solver.get("min_contact", 1.0)
+
+        def families(lay: FloorLayout, g: RoomGraph, drop: bool) -> tuple[FloorLayout, RoomGraph, list[str]]:
+            # a region and the rooms cut from it, one of them still below its width, laid out
+            # again as a row along one side with the region's room taking the rest; with
+            # ``drop``, a region too tight for all of them without one
+            return relay_families(lay, g, program.building_type, min_contact=contact, keep=asked, drop=drop)
+
+        def merges(lay: FloorLayout, g: RoomGraph) -> tuple[FloorLayout, RoomGraph, list[str]]:
             # what is below its width still merges or is dropped as a room too small is, where
             # the merged room comes out at its width (two wards 2.5 m wide become one 5 m wide);
             # each merge redraws two rooms, the others' measures come from room_shape's cache
             def narrow_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
                 return dict.fromkeys(narrow_rooms(lay.rooms, program.building_type), NARROW_WHY)
 
-            layout, graph, merged = merge_unfit_rooms(
-                layout, graph, narrow_of, program.building_type,
+            return merge_unfit_rooms(
+                lay, g, narrow_of, program.building_type,
                 same_region=program.load_bearing_walls, keep=asked, cure="narrow",
             )
-            mended += merged
-        if STORE_POCKETS:
-            # and what is below its width only by a pocket (beside a core, past a stair) keeps
-            # the pocket as a store of its own
-            layout, graph, stored = store_pockets(
-                layout, graph, program.building_type, NARROW_WHY, min_contact=solver.get("min_contact", 1.0),
+
+        def stores(lay: FloorLayout, g: RoomGraph) -> tuple[FloorLayout, RoomGraph, list[str]]:
+            # what is below its width only by a pocket (beside a core, past a stair) keeps the
+            # pocket as a store of its own
+            return store_pockets(lay, g, program.building_type, NARROW_WHY, min_contact=contact)
+
+        def halls(lay: FloorLayout, g: RoomGraph) -> tuple[FloorLayout, RoomGraph, list[str]]:
+            # what is below its width because it is also a way through keeps its arms as halls
+            # off it, with the doors they carry
+            return hall_arms(
+                lay, g, program.building_type, NARROW_WHY, min_contact=contact,
+                same_region=program.load_bearing_walls,
             )
-            mended += stored
+
+        mends = {
+            "families": lambda lay, g: families(lay, g, False),
+            "merges": merges,
+            "stores": stores,
+            "halls": halls,
+            "drops": lambda lay, g: families(lay, g, True),
+        }
+        wanted = {"merges": MERGE_NARROW, "stores": STORE_POCKETS, "halls": HALL_ARMS}
+        for step in (s for s in NARROW_MENDS if wanted.get(s, True)):
+            layout, graph, notes_of = mends[step](layout, graph)
+            mended += notes_of
         # last, passages 0.5 m wide (left by rounds laid out at 1 m rules) widened from a neighbour
         layout = widen_passages(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, mask_defects, rooms_from_grid
-from mansion.building.recut import _kept_walls, _pieces, _walls, _wide_rectangle, width_squares
+from mansion.building.recut import _kept_walls, _pieces, _walls, _wide_rectangle, sound_body
 from mansion.models.graph import RoomEdge, RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_shape import EPS
@@ -73,15 +73,11 @@ def _stored(
     the room is not below its width or a rule of :mod:`mansion.building.stores` fails."""
     rooms = {r.id: r for r in layout.rooms}
     nodes = {n.id: n for n in graph.nodes}
-    kind = rooms[room].room_type
     cell = layout.grid.cell_size
-    found = width_squares(layout, room, nodes, building_type)
+    found = sound_body(layout, room, nodes, building_type)
     if found is None:
         return None
-    labels, ids, mask, before, keep = found
-    after = mask_defects(keep, kind, building_type, cell)
-    if "narrow" in after or not after <= before:
-        return None
+    labels, ids, mask, keep = found
     new = labels.copy()
     stores: list[tuple[str, float]] = []
     taken = set(ids)
