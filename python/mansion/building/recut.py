@@ -1063,29 +1063,31 @@ def _judged(
     and the defects must be fewer."""
     grid = layout.grid
     ids = list(grid.ids)
+    cell = grid.cell_size
     layout_types = {r.id: r.room_type for r in layout.rooms}
-    for rid in cluster:
-        mask = new == ids.index(rid)
-        if mask.sum() * grid.cell_size ** 2 + EPS < least[rid] or not _connected(mask):
-            return None
-        if any(a > b for a, b in zip(_passable(mask), passable[rid])):
-            return None
-    if _walls(new, ids, grid.cell_size, keep, min_contact) is None:
+    masks = {rid: new == ids.index(rid) for rid in cluster}
+    # the cheap rules first (areas, then pieces, then the defects), the costly ones last
+    if any(m.sum() * cell ** 2 + EPS < least[rid] for rid, m in masks.items()):
+        return None
+    if not all(_connected(m) for m in masks.values()):
         return None
     # fewer defects over the cluster than before, none of its rooms unusable (a toilet lobby
     # narrower than the building's corridors for an accessible toilet that holds its square)
     defects, miss = 0, 0.0
-    for rid in cluster:
-        mask = new == ids.index(rid)
-        found = mask_defects(mask, layout_types[rid], building_type, grid.cell_size)
+    for rid, mask in masks.items():
+        found = mask_defects(mask, layout_types[rid], building_type, cell)
         if "unusable" in found or (own and not found <= before[rid]):
             return None
         defects += len(found)
-        miss += abs(mask.sum() * grid.cell_size ** 2 - targets[rid])
+        miss += abs(mask.sum() * cell ** 2 - targets[rid])
     # a cluster whose rooms were unusable may come out with as many defects in all (three toilets
     # a little narrow instead of one without a 1 m square, narrow and a sliver)
     was = sum(len(d) for d in before.values())
     was_unusable = any("unusable" in d for d in before.values())
     if defects > was or (defects == was and (own or not was_unusable)):
+        return None
+    if any(any(a > b for a, b in zip(_passable(m), passable[rid])) for rid, m in masks.items()):
+        return None
+    if _walls(new, ids, cell, keep, min_contact) is None:
         return None
     return defects * 1e3 + miss, _redrawn(layout, new)

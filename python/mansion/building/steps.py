@@ -17,7 +17,9 @@ for them: rooms it can do without (one of several wards, with its ensuite) are l
 floor is laid out again (:func:`leave_out`), and with them, of each type, the smallest room the
 layout left below its clear width (:data:`SPARE_NARROW`; never a room the description asked for);
 a floor with rooms below their clear width alone is laid out again without the smallest of each
-type of them, under one seed (:data:`RESOLVE_NARROW`). The new layout is kept when it leaves no
+type of them, under one seed (:data:`RESOLVE_NARROW`); a floor with rooms too small for it that
+it can spare none of is laid out again with all of them under seeds of its own
+(:data:`RESOLVE_SAME_SEEDS`). The new layout is kept when it leaves no
 more rooms unfit (nor without a usable square), fewer
 unfit or below their width in all, and no more elongated rooms or slivers (up to
 :data:`RESOLVE_SEEDS` layouts, each under its own seed, until one is), and each room left out is
@@ -31,11 +33,16 @@ where an architect would, or dropped where the program can do without it
 beside it, a flat's second bedroom into its living room), each recorded. Then rooms below their
 clear width are cut again as rectangles where a neighbour can give them floor
 (:func:`mansion.building.recut.recut_narrow_rooms`), the strips of those still below it are
-handed to the rooms beside them (:func:`mansion.building.recut.hand_off_strips`), what is
-still below its width merges like a room too small where the merged room comes out at its width
-(:data:`MERGE_NARROW`: two wards 2.5 m wide become one), a room below its width only by a
-pocket beside a core keeps it as a store (:mod:`mansion.building.stores`), each recorded, and
-last, parts of rooms one cell wide are widened from a neighbour
+handed to the rooms beside them (:func:`mansion.building.recut.hand_off_strips`); then, in the
+order of :data:`NARROW_MENDS`, a region and the rooms cut from it, one of them still below its
+width, are laid out again as a row along one side (:mod:`mansion.building.families`: an open
+office curled round its meeting room), a room below its width only by a pocket beside a core
+keeps it as a store (:mod:`mansion.building.stores`), a room below its width by arms that carry
+its doors keeps them as halls (:mod:`mansion.building.halls`: a play hall's arm to its sleep
+room becomes a corridor), what is still below its width merges like a room too small where the
+merged room comes out at its width (:data:`MERGE_NARROW`: two wards 2.5 m wide become one), and
+a region too tight for its rooms is laid out as a row without the smallest it can drop; each
+recorded. Last, parts of rooms one cell wide are widened from a neighbour
 (:func:`mansion.building.recut.widen_passages`).
 """
 
@@ -315,6 +322,15 @@ SPARE_NARROW = True
 #: 1.21 times the process time, where one costs 1.05.
 RESOLVE_NARROW = True
 RESOLVE_NARROW_SEEDS = 1
+#: Layouts tried, each under a seed of its own and with a sixth of the candidates, for a floor
+#: that left rooms below their minimum area or without a usable square and can spare none of them
+#: (:func:`leave_out`): laid out again with all its rooms, kept by the same rule
+#: (:func:`_fits_better`). Measured on the offline hundreds: rooms below their area 13 / 4 -> 10 / 3,
+#: without a usable square 1 / 0 -> 0 / 0, below their width 81 / 57 -> 81 / 56, all passes on
+#: against off 1.42 -> 1.46 times (the same seeds for all such floors: one, 81 / 55 below width
+#: but 12 below area; six as three; the full batch, none mended; every floor with rooms below
+#: their width too, 78 / 54 below width but 1.53 times).
+RESOLVE_SAME_SEEDS = 3
 
 #: Whether a room still below its clear width after every other mend is merged into a neighbour
 #: (or dropped, its floor given to one) by the rules rooms too small merge by
@@ -329,13 +345,16 @@ MERGE_NARROW = True
 #: 176 -> 162 (25 stores; malls 97 and 55 hold 22 of them), second hundred 134 -> 133.
 STORE_POCKETS = True
 #: The mends of rooms still below their width, in order: "families" (a region and the rooms cut
-#: from it laid out again as a row, :func:`mansion.building.families.relay_families`), "merges"
-#: (:data:`MERGE_NARROW`), "stores" (:data:`STORE_POCKETS`), "halls" (:data:`HALL_ARMS`),
-#: "drops" (a family too tight for its rooms laid out again without one).
+#: from it laid out again as a row, :func:`mansion.building.families.relay_families`), "stores"
+#: (:data:`STORE_POCKETS`), "halls" (:data:`HALL_ARMS`), "merges" (:data:`MERGE_NARROW`),
+#: "drops" (a family too tight for its rooms laid out again without one). Those that keep every
+#: room come first: with the merges before the stores and halls, the same rooms are left below
+#: their width on the offline hundreds (80 / 57) for 10 / 10 rooms fewer.
 NARROW_MENDS = ("families", "stores", "halls", "merges", "drops")
 #: Whether a room below its width because arms of it run to the rooms it serves (a play hall's
 #: arm to its sleep room) keeps the arms as halls off it
-#: (:func:`mansion.building.halls.hall_arms`).
+#: (:func:`mansion.building.halls.hall_arms`). Measured on the offline hundreds: below width
+#: 101 / 66 -> 90 / 60 (14 / 11 halls).
 HALL_ARMS = True
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
@@ -572,11 +591,15 @@ def solve_building_floor(
         # a sixth of the candidates per retry: with rooms out the floor has area to spare, and
         # the full batch cost the hundred 1.4 times its generation time
         quick = {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
-        shape = misshapen(layout.rooms) if dropped else (0, 0)  # the layout the new ones must match
-        for k in range((RESOLVE_SEEDS if unfit else RESOLVE_NARROW_SEEDS) if dropped else 0):
+        # a floor with rooms too small for it that it cannot spare is laid out again with all
+        # its rooms, under seeds of its own
+        same = bool(unfit) and not dropped
+        shape = misshapen(layout.rooms) if (dropped or same) else (0, 0)  # what the new ones must match
+        tries = RESOLVE_SAME_SEEDS if same else (RESOLVE_SEEDS if unfit else RESOLVE_NARROW_SEEDS) if dropped else 0
+        for k in range(tries):
             try:
-                # the floor's own seed first, then others of its own
-                again_seed = seed if k == 0 else derived_seed(seed, "again", k)
+                # the floor's own seed first (fewer rooms), then others of its own
+                again_seed = seed if k == 0 and not same else derived_seed(seed, "again", k)
                 again = _solve(index, fewer, footprint, None, again_seed, quick, drop_widths, only=attempts - 1)
             except InfeasibleLayoutError:
                 again = None
