@@ -121,3 +121,51 @@ def test_an_adjacency_the_arm_holds_is_not_passed_and_the_hub_of_a_floor_that_ca
     # a floor whose walls the floor above follows never splits its hub
     same_layout, same_graph, notes = hall_arms(layout, plain, "kindergarten", NARROW_WHY, same_region=True)
     assert notes == [] and same_layout == layout and same_graph == plain
+
+
+# A hotel floor: G a guest room 4 m × 5 m off the corridor C with an arm 1.5 m wide to its
+# ensuite E, which it reaches only along the arm; S a store.
+GUEST = """
+GGGGGGGGGGGEEEE
+GGGGGGGGGGGEEEE
+GGGGGGGGGGGEEEE
+GGGGGGGGGGGEEEE
+GGGGGGGGGGGSSSS
+GGGGGGGGSSSSSSS
+GGGGGGGGSSSSSSS
+GGGGGGGGSSSSSSS
+GGGGGGGGSSSSSSS
+GGGGGGGGSSSSSSS
+CCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCC
+"""
+GUEST_NAMES = {
+    "C": ("corridor", "main", "corridor", 4.0),
+    "G": ("guest_room_1", "Entities", "guest_room", 16.0),
+    "E": ("guest_room_1_ensuite", "Entities", "ensuite", 3.0),
+    "S": ("store_1", "Entities", "storage", 2.0),
+}
+GUEST_EDGES = [("corridor", "guest_room_1"), ("guest_room_1", "guest_room_1_ensuite"), ("corridor", "store_1")]
+
+
+def test_a_guest_rooms_arm_to_its_ensuite_becomes_its_entry_not_a_corridor() -> None:
+    from mansion.building.halls import ENTRY_TYPE
+
+    layout, graph = layout_of(GUEST, GUEST_NAMES), graph_of(GUEST_NAMES, GUEST_EDGES)
+    assert "guest_room_1" in narrow_rooms(layout.rooms, "hotel")
+    split, more, notes = hall_arms(layout, graph, "hotel", NARROW_WHY)
+    assert notes == [f"guest_room_1_entry_1 made an entry of guest_room_1's arm (guest_room_1 {NARROW_WHY})"]
+    entry = split.room("guest_room_1_entry_1")
+    assert entry.room_type == ENTRY_TYPE and entry.area == 3.75
+    assert narrow_rooms(split.rooms, "hotel") == set()
+    # the ensuite's door moved to the entry, which opens onto the room; the entry is held to its
+    # own table width (1.2 m), not the building's corridors' (a ward's arm 2 m wide would not be
+    # a hospital corridor of 2.4 m)
+    pairs = {frozenset((e.source, e.target)) for e in more.edges}
+    assert frozenset(("guest_room_1_entry_1", "guest_room_1_ensuite")) in pairs
+    assert frozenset(("guest_room_1", "guest_room_1_entry_1")) in pairs
+    assert frozenset(("guest_room_1", "guest_room_1_ensuite")) not in pairs
+    assert not mask_defects(split.grid.array() == split.grid.ids.index(entry.id), ENTRY_TYPE, "hotel", CELL)
+    check_graph(more, "floor 1")

@@ -38,6 +38,7 @@ import itertools
 from collections.abc import Iterable
 
 import numpy as np
+from shapely.geometry import Polygon
 
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
@@ -47,7 +48,7 @@ from mansion.building.recut import (
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
-from mansion.models.room_shape import EPS
+from mansion.models.room_shape import EPS, mostly_narrower
 
 __all__ = ["ALL_ORDERS", "MAX_FAMILY", "relay_families"]
 
@@ -77,17 +78,15 @@ def relay_families(
     is laid out again without one of them instead, the smallest that lets it be, dropped with its
     floor given to the head where :mod:`mansion.building.merge` would drop it (never one of
     ``keep``, the rooms the description asked for). With a relaxation note per family."""
-    cell = layout.grid.cell_size
     notes: list[str] = []
     kept = frozenset(keep)
-    labels = layout.grid.array()
-    ids = list(layout.grid.ids)
     parent = cut_parents(graph)
     heads: set[str] = set()
     for room in layout.rooms:
         if room.id not in parent or _wide_rectangle(room, building_type):
             continue
-        if "narrow" in mask_defects(labels == ids.index(room.id), room.room_type, building_type, cell):
+        # room_shape's measure, cached for the outlines the earlier mends measured already
+        if mostly_narrower(Polygon(room.polygon, room.holes), needed_width(room.room_type, building_type)):
             heads.update((room.id, parent[room.id]))
     for head in sorted(heads):
         # the cut tree as it stands: a family laid out without a room has one room fewer

@@ -38,17 +38,22 @@ from __future__ import annotations
 import numpy as np
 
 from mansion import _core
-from mansion.building.load_bearing import first_round_groups
+from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, mask_defects, rooms_from_grid
 from mansion.building.recut import _pieces, _wide_rectangle, sound_body
 from mansion.building.stores import MAX_STORE, STORE_TYPE
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
+from mansion.models.room_design import SANITARY_TYPES, design_key, room_design
 from mansion.models.room_shape import EPS
 from mansion.planning.room_requests import family
 from mansion.planning.topology import design_minimums, min_width
 
-__all__ = ["hall_arms", "hall_type"]
+__all__ = ["ENTRY_TYPE", "hall_arms", "hall_type"]
+
+#: The room type of an arm that leads only to rooms cut from its room (its ensuite): the room's
+#: own entrance lobby, held to its table width (1.2 m), not the corridors'.
+ENTRY_TYPE = "entry_lobby"
 
 
 def hall_type(building_type: str | None) -> str:
@@ -85,7 +90,7 @@ def hall_arms(
             continue
         layout, graph, made = found
         for new, kind in made:
-            what = "a hall" if kind != STORE_TYPE else "a store"
+            what = {STORE_TYPE: "a store", ENTRY_TYPE: "an entry"}.get(kind, "a hall")
             notes.append(f"{new} made {what} of {room}'s arm ({room} {why})")
     return layout, graph, notes
 
@@ -105,19 +110,15 @@ def _split(
     labels, ids, mask, keep = found
     hall = hall_type(building_type)
     need = max(DOOR_WIDTH, min_contact)
-    # the grid with every arm a room of its own, numbered after the floor's rooms
+    # the grid with every arm a room of its own, numbered after the floor's rooms (each named
+    # once it is known to be a hall or a store)
     new = labels.copy()
     pieces = _pieces(mask & ~keep)
-    taken = set(ids)
     made: list[tuple[str, str, float]] = []
     for piece in pieces:
         rows, cols = zip(*piece)
         new[rows, cols] = len(ids) + len(made)
-        n = 1
-        while f"{room}_hall_{n}" in taken:
-            n += 1
-        made.append((f"{room}_hall_{n}", hall, len(piece) * cell * cell))
-        taken.add(made[-1][0])
+        made.append((f"arm {len(made)}", hall, len(piece) * cell * cell))
     all_ids = ids + [m[0] for m in made]
     walls = {
         frozenset((all_ids[a], all_ids[b])): (total * cell, longest * cell)
@@ -133,6 +134,9 @@ def _split(
     # each relation of the room kept by its body or passed to the one arm that has its wall
     edges: list[RoomEdge] = []
     serves: dict[str, int] = {m[0]: 0 for m in made}
+    own: dict[str, int] = {m[0]: 0 for m in made}
+    parent = cut_parents(graph)
+    own_bathroom = room_design(rooms[room].room_type).own_bathroom
     for e in graph.edges:
         if room not in (e.source, e.target):
             edges.append(e)
@@ -148,6 +152,8 @@ def _split(
         if arm is None:
             return None
         serves[arm] += 1
+        # a bathroom of the room's own (an ensuite cut from a guest room or a ward)
+        own[arm] += parent.get(other) == room and design_key(nodes[other].room_type) in SANITARY_TYPES
         edges.append(RoomEdge(source=arm, target=other, kind=e.kind) if e.source == room
                      else RoomEdge(source=other, target=arm, kind=e.kind))
     # each arm a sound hall that serves, or a sound store that needs none; each opening onto
@@ -161,13 +167,27 @@ def _split(
         if wall is None or wall[1] + EPS < need:
             return None
         if serves[rid]:
-            if mask_defects(part, hall, building_type, cell):
+            # an arm of a room with a bathroom of its own that leads only to it (a guest room's
+            # or a ward's arm to its ensuite) is the room's own entry, not a corridor
+            kind = ENTRY_TYPE if own_bathroom and own[rid] == serves[rid] else hall
+            if mask_defects(part, kind, building_type, cell):
                 return None
-            final.append((rid, hall, area))
+            final.append((rid, kind, area))
         elif area <= MAX_STORE + EPS and not mask_defects(part, STORE_TYPE, building_type, cell):
             final.append((rid, STORE_TYPE, area))
         else:
             return None
+    # the arms named: room_hall_1, room_entry_1, room_store_1, ...
+    taken, name = set(ids), {}
+    for rid, typ, _ in final:
+        what, n = {STORE_TYPE: "store", ENTRY_TYPE: "entry"}.get(typ, "hall"), 1
+        while f"{room}_{what}_{n}" in taken:
+            n += 1
+        name[rid] = f"{room}_{what}_{n}"
+        taken.add(name[rid])
+    all_ids = [name.get(rid, rid) for rid in all_ids]
+    final = [(name[rid], typ, area) for rid, typ, area in final]
+    edges = [e.model_copy(update={"source": name.get(e.source, e.source), "target": name.get(e.target, e.target)}) for e in edges]
     grid = layout.grid.model_copy(update={"ids": all_ids, "labels": new.tolist()})
     old = dict(rooms)
     for rid, typ, area in final:

@@ -94,6 +94,7 @@ __all__ = [
     "solve_building_floor",
     "solver_options",
     "leave_out",
+    "mend_narrow",
     "misshapen",
     "narrow_rooms",
     "smallest_narrow",
@@ -330,7 +331,7 @@ RESOLVE_NARROW_SEEDS = 1
 #: against off 1.42 -> 1.46 times (the same seeds for all such floors: one, 81 / 55 below width
 #: but 12 below area; six as three; the full batch, none mended; every floor with rooms below
 #: their width too, 78 / 54 below width but 1.53 times).
-RESOLVE_SAME_SEEDS = 3
+RESOLVE_SAME_SEEDS = 2
 
 #: Whether a room still below its clear width after every other mend is merged into a neighbour
 #: (or dropped, its floor given to one) by the rules rooms too small merge by
@@ -637,50 +638,11 @@ def solve_building_floor(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
             same_region=program.load_bearing_walls,
         )
-        contact = solver.get("min_contact", 1.0)
-
-        def families(lay: FloorLayout, g: RoomGraph, drop: bool) -> tuple[FloorLayout, RoomGraph, list[str]]:
-            # a region and the rooms cut from it, one of them still below its width, laid out
-            # again as a row along one side with the region's room taking the rest; with
-            # ``drop``, a region too tight for all of them without one
-            return relay_families(lay, g, program.building_type, min_contact=contact, keep=asked, drop=drop)
-
-        def merges(lay: FloorLayout, g: RoomGraph) -> tuple[FloorLayout, RoomGraph, list[str]]:
-            # what is below its width still merges or is dropped as a room too small is, where
-            # the merged room comes out at its width (two wards 2.5 m wide become one 5 m wide);
-            # each merge redraws two rooms, the others' measures come from room_shape's cache
-            def narrow_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
-                return dict.fromkeys(narrow_rooms(lay.rooms, program.building_type), NARROW_WHY)
-
-            return merge_unfit_rooms(
-                lay, g, narrow_of, program.building_type,
-                same_region=program.load_bearing_walls, keep=asked, cure="narrow",
-            )
-
-        def stores(lay: FloorLayout, g: RoomGraph) -> tuple[FloorLayout, RoomGraph, list[str]]:
-            # what is below its width only by a pocket (beside a core, past a stair) keeps the
-            # pocket as a store of its own
-            return store_pockets(lay, g, program.building_type, NARROW_WHY, min_contact=contact)
-
-        def halls(lay: FloorLayout, g: RoomGraph) -> tuple[FloorLayout, RoomGraph, list[str]]:
-            # what is below its width because it is also a way through keeps its arms as halls
-            # off it, with the doors they carry
-            return hall_arms(
-                lay, g, program.building_type, NARROW_WHY, min_contact=contact,
-                same_region=program.load_bearing_walls,
-            )
-
-        mends = {
-            "families": lambda lay, g: families(lay, g, False),
-            "merges": merges,
-            "stores": stores,
-            "halls": halls,
-            "drops": lambda lay, g: families(lay, g, True),
-        }
-        wanted = {"merges": MERGE_NARROW, "stores": STORE_POCKETS, "halls": HALL_ARMS}
-        for step in (s for s in NARROW_MENDS if wanted.get(s, True)):
-            layout, graph, notes_of = mends[step](layout, graph)
-            mended += notes_of
+        # then, in the order of NARROW_MENDS, the mends of what is still below its width
+        layout, graph, narrowed = mend_narrow(
+            layout, graph, program, keep=asked, min_contact=solver.get("min_contact", 1.0),
+        )
+        mended += narrowed
         # last, passages 0.5 m wide (left by rounds laid out at 1 m rules) widened from a neighbour
         layout = widen_passages(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
@@ -708,6 +670,49 @@ def solve_building_floor(
         position_words=words,
     )
 
+
+
+def mend_narrow(
+    layout: FloorLayout, graph: RoomGraph, program: BuildingProgram, keep: set[str], min_contact: float,
+) -> tuple[FloorLayout, RoomGraph, list[str]]:
+    """``layout`` and ``graph`` after the mends of :data:`NARROW_MENDS`, in that order, of the
+    rooms still below their clear width once they were cut again and handed their strips off
+    (those whose flag, :data:`MERGE_NARROW`, :data:`STORE_POCKETS` or :data:`HALL_ARMS`, is off
+    are skipped); with the relaxation notes they wrote. ``keep``: the rooms the description asked
+    for, never dropped."""
+    kind, carried = program.building_type, program.load_bearing_walls
+
+    def narrow_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
+        return dict.fromkeys(narrow_rooms(lay.rooms, kind), NARROW_WHY)
+
+    mends: dict[str, Callable[[FloorLayout, RoomGraph], tuple[FloorLayout, RoomGraph, list[str]]]] = {
+        # a region and the rooms cut from it, one of them still below its width, laid out
+        # again as a row along one side with the region's room taking the rest
+        "families": lambda lay, g: relay_families(lay, g, kind, min_contact=min_contact, keep=keep),
+        # what is below its width only by a pocket (beside a core, past a stair) keeps the
+        # pocket as a store of its own
+        "stores": lambda lay, g: store_pockets(lay, g, kind, NARROW_WHY, min_contact=min_contact),
+        # what is below its width because it is also a way through keeps its arms as halls off
+        # it, with the doors they carry
+        "halls": lambda lay, g: hall_arms(
+            lay, g, kind, NARROW_WHY, min_contact=min_contact, same_region=carried,
+        ),
+        # what is still below its width merges or is dropped as a room too small is, where the
+        # merged room comes out at its width (two wards 2.5 m wide become one 5 m wide); each
+        # merge redraws two rooms, the others' measures come from room_shape's cache
+        "merges": lambda lay, g: merge_unfit_rooms(
+            lay, g, narrow_of, kind, same_region=carried, keep=keep, cure="narrow",
+        ),
+        # a region too tight for its rooms laid out as a row without the smallest it can drop
+        "drops": lambda lay, g: relay_families(lay, g, kind, min_contact=min_contact, keep=keep, drop=True),
+    }
+    wanted = {"merges": MERGE_NARROW, "stores": STORE_POCKETS, "halls": HALL_ARMS}
+    notes: list[str] = []
+    for step in NARROW_MENDS:
+        if wanted.get(step, True):
+            layout, graph, done = mends[step](layout, graph)
+            notes += done
+    return layout, graph, notes
 
 
 def finish_building(

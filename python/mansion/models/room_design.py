@@ -119,6 +119,9 @@ ROOM_DESIGN: dict[str, RoomDesign] = {
     "concourse": _circ(30.0, 3.0),
     "entrance_vestibule": _circ(4.0, 1.5),
     "toilet_lobby": _circ(2.5, 1.2, through=False),
+    # a room's own entrance lobby, with the door of its ensuite (a guest room's, a ward's): no
+    # one passes through it to elsewhere (Metric Handbook, hotels: guest room entries 1.1-1.4 m)
+    "entry_lobby": _circ(2.0, 1.2, through=False),
     "waiting_area": _circ(10.0, 2.4),
     "back_of_house": _circ(5.0, 1.2),
     "balcony": _circ(2.0, 1.0, through=False),

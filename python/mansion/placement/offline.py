@@ -246,6 +246,9 @@ _WORDS = [
     # "toilet" rule set's, shut a lobby's door off (the navigation bench, building 54 of the
     # hundred), so it is furnished as circulation, before "toilet" matches
     ("toilet lobby", "circulation"),
+    # so is a room's own entry (a guest room's arm to its ensuite, mansion.building.halls): a
+    # lobby's sofas would shut the ensuite's door off
+    ("entry lobby", "circulation"),
     # an ensuite is a ward's or a guest room's bathroom, not a suite: "suite" matched it, and
     # hospital 48's ward ensuites got a bed, a desk and a dresser in 8 m²
     ("ensuite", "toilet"), ("en suite", "toilet"),
