@@ -43,7 +43,7 @@ from shapely.geometry import Polygon
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.recut import (
-    _judged, _kept_walls, _least, _passable, _wide_rectangle, band_shares, in_a_row,
+    _judged, _least, _wide_rectangle, band_shares, cluster_cells, in_a_row,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
@@ -138,19 +138,12 @@ def _relaid_family(
 ) -> tuple[float, FloorLayout] | None:
     """(its score: defects, then the rooms' miss from their planned areas; the layout) of the
     best re-layout of ``head``'s family that passes, or None."""
-    grid = layout.grid
-    labels = grid.array()
-    ids = list(grid.ids)
-    cell = grid.cell_size
+    family = [head, *members]
+    labels, cell, keys, region, keep, passable = cluster_cells(layout, graph, family)
     rooms = {r.id: r for r in layout.rooms}
     nodes = {n.id: n for n in graph.nodes}
-    family = [head, *members]
-    keys = {rid: ids.index(rid) for rid in family}
-    region = np.isin(labels, list(keys.values()))
-    keep = _kept_walls(layout, graph, set(family))
     before = {rid: mask_defects(labels == keys[rid], rooms[rid].room_type, building_type, cell) for rid in family}
     least = {rid: _least(nodes[rid]) for rid in family}
-    passable = {rid: _passable(labels == keys[rid]) for rid in family}
     targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in family}
     width = {m: needed_width(rooms[m].room_type, building_type) for m in members}
     deep = max(width.values())

@@ -957,22 +957,15 @@ def _relaid_cluster(
     of a cluster, or None when none passes: ``head`` (a toilet lobby) as a strip along one side
     of the cells it and ``members`` (the rooms cut from it) hold, the members side by side along
     the strip in the rest, each a run of whole columns holding its share of the cells."""
-    grid = layout.grid
-    labels = grid.array()
-    ids = list(grid.ids)
-    cell = grid.cell_size
+    cluster = [head, *members]
+    labels, cell, keys, region, keep, passable = cluster_cells(layout, graph, cluster)
     rooms = {r.id: r for r in layout.rooms}
     nodes = {n.id: n for n in graph.nodes}
-    cluster = [head, *members]
-    keys = {rid: ids.index(rid) for rid in cluster}
-    region = np.isin(labels, list(keys.values()))
-    keep = _kept_walls(layout, graph, set(cluster))
     before = {
         rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
         for rid in cluster
     }
     least = {rid: nodes[rid].min_area or 0.0 for rid in cluster}
-    passable = {rid: _passable(labels == keys[rid]) for rid in cluster}
     targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in cluster}
     depth = max(3, int(np.ceil(room_design(rooms[head].room_type).min_width / cell - 1e-6)))
     best: tuple[float, FloorLayout] | None = None
@@ -997,6 +990,21 @@ def _relaid_cluster(
                 if found is not None and (best is None or found[0] < best[0] - EPS):
                     best = found
     return best
+
+
+def cluster_cells(
+    layout: FloorLayout, graph: RoomGraph, cluster: list[str],
+) -> tuple[np.ndarray, float, dict[str, int], np.ndarray, list[tuple[str, str, float, float]], dict[str, tuple[int, int]]]:
+    """What a re-layout of the rooms of ``cluster`` starts from: the layout's labels, its cell
+    size, each room's label, the cells the rooms hold together, the relations whose walls must
+    hold (:func:`_kept_walls`) and each room's passages (:func:`_passable`) as they are."""
+    labels = layout.grid.array()
+    ids = list(layout.grid.ids)
+    keys = {rid: ids.index(rid) for rid in cluster}
+    region = np.isin(labels, list(keys.values()))
+    keep = _kept_walls(layout, graph, set(cluster))
+    passable = {rid: _passable(labels == keys[rid]) for rid in cluster}
+    return labels, layout.grid.cell_size, keys, region, keep, passable
 
 
 def band_shares(
