@@ -37,10 +37,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, mask_defects, rooms_from_grid
-from mansion.building.recut import _pieces, _wide_rectangle, sound_body
+from mansion.building.recut import _pieces, _walls, _wide_rectangle, sound_body, wall_kept
 from mansion.building.stores import MAX_STORE, STORE_TYPE
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
@@ -120,16 +119,11 @@ def _split(
         new[rows, cols] = len(ids) + len(made)
         made.append((f"arm {len(made)}", hall, len(piece) * cell * cell))
     all_ids = ids + [m[0] for m in made]
-    walls = {
-        frozenset((all_ids[a], all_ids[b])): (total * cell, longest * cell)
-        for a, b, total, longest in _core.adjacencies(new.astype(np.int32))
-    }
+    walls = _walls(new, all_ids, cell, [], min_contact) or {}
     before_walls = {frozenset((a.a, a.b)): (a.contact, a.longest) for a in layout.adjacencies}
 
     def holds(x: str, y: str, was: tuple[float, float]) -> bool:
-        # the wall a relation had: a door's where it had one, else what it had
-        now = walls.get(frozenset((x, y)))
-        return now is not None and now[1] + EPS >= min(was[1], need) and now[0] + EPS >= min(was[0], min_contact)
+        return wall_kept(walls.get(frozenset((x, y))), was[1], was[0], min_contact)
 
     # each relation of the room kept by its body or passed to the one arm that has its wall
     edges: list[RoomEdge] = []

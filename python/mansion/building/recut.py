@@ -863,13 +863,19 @@ def _walls(
         for a, b, total, longest in _core.adjacencies(new.astype(np.int32))
     }
     for s, t, longest, contact in keep:
-        now = walls.get(frozenset((s, t)))
-        if (
-            now is None or now[1] + EPS < min(longest, max(DOOR_WIDTH, min_contact))
-            or now[0] + EPS < min(contact, min_contact)
-        ):
+        if not wall_kept(walls.get(frozenset((s, t))), longest, contact, min_contact):
             return None
     return walls
+
+
+def wall_kept(now: tuple[float, float] | None, longest: float, contact: float, min_contact: float) -> bool:
+    """Whether a relation whose wall was ``longest`` at its longest and ``contact`` in all keeps
+    it in ``now`` ((contact, longest), None: no wall): a door's (``min_contact``) where it had
+    one, else what it had."""
+    return (
+        now is not None and now[1] + EPS >= min(longest, max(DOOR_WIDTH, min_contact))
+        and now[0] + EPS >= min(contact, min_contact)
+    )
 
 
 def _redrawn(layout: FloorLayout, new: np.ndarray) -> FloorLayout:

@@ -347,16 +347,13 @@ MERGE_NARROW = True
 STORE_POCKETS = True
 #: The mends of rooms still below their width, in order: "families" (a region and the rooms cut
 #: from it laid out again as a row, :func:`mansion.building.families.relay_families`), "stores"
-#: (:data:`STORE_POCKETS`), "halls" (:data:`HALL_ARMS`), "merges" (:data:`MERGE_NARROW`),
-#: "drops" (a family too tight for its rooms laid out again without one). Those that keep every
-#: room come first: with the merges before the stores and halls, the same rooms are left below
-#: their width on the offline hundreds (80 / 57) for 10 / 10 rooms fewer.
+#: (:data:`STORE_POCKETS`), "halls" (a room's arms that carry its doors made halls off it,
+#: :func:`mansion.building.halls.hall_arms`; measured alone on the offline hundreds, below width
+#: 101 / 66 -> 90 / 60 with 14 / 11 halls), "merges" (:data:`MERGE_NARROW`), "drops" (a family
+#: too tight for its rooms laid out again without one). Those that keep every room come first:
+#: with the merges before the stores and halls, the same rooms are left below their width on the
+#: offline hundreds (80 / 57) for 10 / 10 rooms fewer. A mend left out of the tuple is off.
 NARROW_MENDS = ("families", "stores", "halls", "merges", "drops")
-#: Whether a room below its width because arms of it run to the rooms it serves (a play hall's
-#: arm to its sleep room) keeps the arms as halls off it
-#: (:func:`mansion.building.halls.hall_arms`). Measured on the offline hundreds: below width
-#: 101 / 66 -> 90 / 60 (14 / 11 halls).
-HALL_ARMS = True
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
 
@@ -677,8 +674,8 @@ def mend_narrow(
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """``layout`` and ``graph`` after the mends of :data:`NARROW_MENDS`, in that order, of the
     rooms still below their clear width once they were cut again and handed their strips off
-    (those whose flag, :data:`MERGE_NARROW`, :data:`STORE_POCKETS` or :data:`HALL_ARMS`, is off
-    are skipped); with the relaxation notes they wrote. ``keep``: the rooms the description asked
+    (the merges and stores also skipped when :data:`MERGE_NARROW` or :data:`STORE_POCKETS` is
+    off); with the relaxation notes they wrote. ``keep``: the rooms the description asked
     for, never dropped."""
     kind, carried = program.building_type, program.load_bearing_walls
 
@@ -706,7 +703,7 @@ def mend_narrow(
         # a region too tight for its rooms laid out as a row without the smallest it can drop
         "drops": lambda lay, g: relay_families(lay, g, kind, min_contact=min_contact, keep=keep, drop=True),
     }
-    wanted = {"merges": MERGE_NARROW, "stores": STORE_POCKETS, "halls": HALL_ARMS}
+    wanted = {"merges": MERGE_NARROW, "stores": STORE_POCKETS}
     notes: list[str] = []
     for step in NARROW_MENDS:
         if wanted.get(step, True):
