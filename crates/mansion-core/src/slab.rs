@@ -11,6 +11,12 @@
 //! wide along it as their area needs. They are candidates like the grown ones: the same cleanup,
 //! width and topology filter and energy decide whether they win ([`crate::cut`]).
 //!
+//! Children the round's graph says must share a wall (a checkout beside the entrance vestibule, a
+//! washroom beside the sleep room) go to one band, next to each other along the corridor
+//! ([`links`]): by their seeds alone they often fell on two sides of it, and every slab layout of
+//! such a round failed the candidate filter (every supermarket's ground floor of the offline
+//! hundred, its sales floor left to snake 3 m wide between the rooms).
+//!
 //! Which side of a single corridor a child goes to is chosen over every split of the children
 //! ([`Frame::split_free`]), not only in their seeds' order across it: a band deeper than a room
 //! needs draws it as a strip along the depth, so the split weighs the strips it makes against
@@ -23,13 +29,14 @@ use crate::grid::{Grid, Label, EMPTY};
 /// Corridor widths a slab layout tries, in cells, at least (the parent's own rule or clear width
 /// when wider, up to [`MAX_CORRIDOR`]).
 const MIN_CORRIDOR: usize = 3;
-/// Widest corridor band, in cells (5 m on the 0.5 m grid). The parent of a slab round is not
+/// Widest corridor band, in cells (6 m on the 0.5 m grid). The parent of a slab round is not
 /// always a corridor: an open office with its meeting rooms, a play hall, a reading hall, a
-/// flat's living room. At 3 m (a hospital's 2.4 m ward corridor fits) such a parent came out
-/// narrower than its own clear width (an open office's 4 m); at 5 m, rooms below their width on
-/// the realism hundreds 220 -> 205 and 178 -> 167, elongated 36 -> 28 and 20 -> 17, in the same
-/// time.
-const MAX_CORRIDOR: usize = 10;
+/// flat's living room, a supermarket's sales floor. At 3 m (a hospital's 2.4 m ward corridor
+/// fits) such a parent came out narrower than its own clear width (an open office's 4 m); at
+/// 5 m, rooms below their width on the realism hundreds 220 -> 205 and 178 -> 167, elongated
+/// 36 -> 28 and 20 -> 17, in the same time. At 6 m a sales floor's band holds its clear width
+/// too: below width 75 / 51 -> 75 / 50, elongated 20 / 18 -> 20 / 14.
+const MAX_CORRIDOR: usize = 12;
 /// A side band shallower than this, in cells, holds no rooms.
 const MIN_DEPTH: usize = 3;
 
@@ -116,6 +123,42 @@ pub fn layouts(p: &Prepared, clear: &[usize]) -> Vec<Grid> {
         }
     }
     out
+}
+
+/// The pairs of the round's children (their positions in `labels`) that must share a wall (a
+/// checkout beside the entrance vestibule, a washroom beside the sleep room): a slab layout puts
+/// them in one band, next to each other along the corridor, or the candidate filter rejects it.
+fn links(p: &Prepared, k: usize) -> Vec<(usize, usize)> {
+    let at = |l: Label| {
+        p.index
+            .get(l as usize)
+            .and_then(|&i| usize::try_from(i).ok())
+            .filter(|&i| i < k)
+    };
+    p.spec
+        .required
+        .iter()
+        .filter_map(|&(a, b)| Some((at(a)?, at(b)?)))
+        .collect()
+}
+
+/// `order` with each linked pair of [`links`] in it made neighbours: the later of the two moved
+/// to just after the earlier.
+fn linked_order(mut order: Vec<usize>, links: &[(usize, usize)]) -> Vec<usize> {
+    for &(a, b) in links {
+        let (Some(ia), Some(ib)) = (
+            order.iter().position(|&x| x == a),
+            order.iter().position(|&x| x == b),
+        ) else {
+            continue;
+        };
+        if ia.abs_diff(ib) > 1 {
+            let (first, later) = if ia < ib { (ia, ib) } else { (ib, ia) };
+            let moved = order.remove(later);
+            order.insert(first + 1, moved);
+        }
+    }
+    order
 }
 
 /// Children at most for [`Frame::split_free`] (it tries every split: 2^k).
@@ -325,6 +368,11 @@ impl Frame {
             groups[b] = across[i..j].to_vec();
             j = i;
         }
+        // linked children in two bands never share a wall
+        let band_of = |i: usize| groups.iter().position(|g| g.contains(&i));
+        if links(p, k).iter().any(|&(a, b)| band_of(a) != band_of(b)) {
+            return None;
+        }
         Some((best[nb][k], groups))
     }
 
@@ -380,9 +428,17 @@ impl Frame {
                 0.0
             }
         };
+        let linked = links(p, k);
         let mut best: Option<(f64, u32)> = None;
         let masks: u32 = if nb == 1 { 1 } else { 1 << k };
         'mask: for mask in 0..masks {
+            // linked children in two bands never share a wall
+            if linked
+                .iter()
+                .any(|&(a, b)| (mask >> a) & 1 != (mask >> b) & 1)
+            {
+                continue;
+            }
             let mut cost = 0.0;
             for (b, &(a, z)) in plan.bands.iter().enumerate() {
                 let depth = z - a;
@@ -653,6 +709,7 @@ impl Frame {
                     .total_cmp(&self.seed(p, y).0)
                     .then(x.cmp(&y))
             });
+            let order = linked_order(order, &links(p, p.labels.len() - 1));
             // a stub through this band is a boundary between its rooms
             let forced: Vec<usize> = stubs
                 .iter()
@@ -960,6 +1017,39 @@ mod tests {
             }
         }
         assert!(passed > 0, "some slab layout passes the candidate filter");
+    }
+
+    /// Do labels `a` and `b` share a wall (an edge between two of their cells)?
+    fn touch(g: &Grid, a: Label, b: Label) -> bool {
+        (0..g.cells.len()).any(|c| {
+            g.cells[c] == a
+                && [c + 1, c + g.w, c.wrapping_sub(1), c.wrapping_sub(g.w)]
+                    .iter()
+                    .any(|&n| n < g.cells.len() && g.cells[n] == b)
+        })
+    }
+
+    #[test]
+    fn children_that_must_share_a_wall_are_laid_side_by_side_in_one_band() {
+        // the wing's south-west and north-east rooms must touch (a checkout beside the entrance
+        // vestibule): by their seeds alone they fall on opposite sides of the corridor
+        let (grid, mut spec) = wing();
+        spec.required.push((1, 4));
+        let walls = Walls::none(grid.w, grid.h);
+        let opts = options(true);
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        let layouts = layouts(&p, &opts.clear);
+        assert!(!layouts.is_empty());
+        let mut s = crate::cleanup::Scratch::new(grid.cells.len());
+        let mut passed = 0;
+        for g in layouts {
+            assert!(touch(&g, 1, 4), "every slab layout puts them side by side");
+            passed += usize::from(p.finish(g, &mut s).is_ok());
+        }
+        assert!(passed > 0, "some slab layout passes the candidate filter");
+        // the order along a band: the later of a linked pair moved next to the earlier
+        assert_eq!(linked_order(vec![0, 1, 2, 3], &[(0, 3)]), vec![0, 3, 1, 2]);
+        assert_eq!(linked_order(vec![2, 0, 1], &[(0, 1)]), vec![2, 0, 1]);
     }
 
     /// A wing whose lift (5) stands at its west edge with the outside beyond it to the south: a

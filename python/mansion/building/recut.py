@@ -1068,13 +1068,15 @@ def _judged(
     building_type: str | None,
     min_contact: float,
     own: bool = False,
+    as_many: bool = False,
 ) -> tuple[float, FloorLayout] | None:
     """(the cluster's defects, then its total miss; the layout) of a re-laid cluster when it
     passes the rules: every room in one piece, at its minimum area, with a usable square, no new
     part one cell wide, and every relation keeping its wall; fewer defects over the cluster, or
     as many where a room of it was unusable before. With ``own`` (a family re-laid for a room of
     it below its width, :mod:`mansion.building.families`), no room may gain a defect it lacked
-    and the defects must be fewer."""
+    and the defects must be fewer; with ``as_many`` too, as many will do (a room pushed out of
+    its strips, :mod:`mansion.building.sides`, whose caller judges its own progress)."""
     grid = layout.grid
     ids = list(grid.ids)
     cell = grid.cell_size
@@ -1098,7 +1100,7 @@ def _judged(
     # a little narrow instead of one without a 1 m square, narrow and a sliver)
     was = sum(len(d) for d in before.values())
     was_unusable = any("unusable" in d for d in before.values())
-    if defects > was or (defects == was and (own or not was_unusable)):
+    if defects > was or (defects == was and not as_many and (own or not was_unusable)):
         return None
     if any(any(a > b for a, b in zip(_passable(m), passable[rid])) for rid, m in masks.items()):
         return None

@@ -56,6 +56,7 @@ from typing import Any
 from shapely.geometry import Polygon
 
 from mansion.building.checks import check_building
+from mansion.building.sides import widen_sides
 from mansion.building.load_bearing import (
     SkeletonSeedPlanner,
     carry_walls,
@@ -353,7 +354,7 @@ STORE_POCKETS = True
 #: too tight for its rooms laid out again without one). Those that keep every room come first:
 #: with the merges before the stores and halls, the same rooms are left below their width on the
 #: offline hundreds (80 / 57) for 10 / 10 rooms fewer. A mend left out of the tuple is off.
-NARROW_MENDS = ("families", "stores", "halls", "merges", "drops")
+NARROW_MENDS = ("sides", "families", "stores", "halls", "merges", "drops")
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
 
@@ -683,6 +684,8 @@ def mend_narrow(
         return dict.fromkeys(narrow_rooms(lay.rooms, kind), NARROW_WHY)
 
     mends: dict[str, Callable[[FloorLayout, RoomGraph], tuple[FloorLayout, RoomGraph, list[str]]]] = {
+        # a room still below its width pushes one of its walls out into the rooms beside it
+        "sides": lambda lay, g: (widen_sides(lay, g, kind, min_contact=min_contact, same_region=carried), g, []),
         # a region and the rooms cut from it, one of them still below its width, laid out
         # again as a row along one side with the region's room taking the rest
         "families": lambda lay, g: relay_families(lay, g, kind, min_contact=min_contact, keep=keep),

@@ -1,0 +1,177 @@
+"""Rooms widened from one side: a room below its clear width moves one of its walls out into the
+rooms beside it, whole rows or columns at a time (issue 14).
+
+A room that takes what its neighbours leave (the floor's hub, a kindergarten's play hall, a
+library's reading hall, a supermarket's sales floor) or one grown between two others can come
+out 3.5 m wide where it needs 4.5 m, beside group rooms 6.5 m deep that could each give a metre.
+The solver's repair moves one row or column at a time and takes a move only when it lowers the
+room's shortfall, and a room 3.5 m wide is as narrow at 4 m as at 3.5: it takes none. An
+architect moves the wall the whole metre.
+
+:func:`widen_sides` takes each room below its width (but cores) and, for each of the four
+directions, pushes the room's cells out that many cells (one to its width's, the fewest first):
+every cell of a neighbour within that reach of the room in that direction goes to the room, across
+the whole side, so the walls it moves stay straight. The donors are the rooms those cells belonged
+to (never a core; on floors that carry walls, only rooms of the room's own first-round region).
+A push is kept under the rules of a family re-laid (:func:`mansion.building.recut._judged` with
+``own``): the room comes out no longer below its width, no room of them gains a defect of ``mansion
+eval realism`` it lacked, they have fewer in all, each stays in one piece at its minimum area with
+no new part one cell wide, and every relation keeps its wall. Of the pushes that pass, the one
+with the fewest defects, then the rooms closest to their planned areas, wins. Nothing of the
+program changes, so nothing is recorded.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from mansion.building.load_bearing import first_round_groups
+from mansion.building.merge import mask_defects, square_cover
+from mansion.building.recut import _judged, _kept_walls, _least, _passable, _wide_rectangle
+from mansion.models.graph import RoomGraph
+from mansion.models.layout import FloorLayout
+from mansion.models.room_design import needed_width
+from mansion.models.room_shape import EPS
+
+__all__ = ["widen_sides"]
+
+#: The four directions a wall is pushed in, as (rows, columns) steps of the label grid.
+DIRECTIONS = ((1, 0), (-1, 0), (0, 1), (0, -1))
+
+
+def widen_sides(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    building_type: str | None,
+    min_contact: float = 1.0,
+    same_region: bool = False,
+) -> FloorLayout:
+    """``layout`` with each room below its clear width widened by pushing one of its sides out
+    into its neighbours where the module's rules allow, rooms in the order of their ids.
+    ``same_region``: only into rooms of its own first-round region (floors that carry walls)."""
+    nodes = {n.id: n for n in graph.nodes}
+    group = first_round_groups(graph) if same_region else None
+    cell = layout.grid.cell_size
+    for room in sorted(r.id for r in layout.rooms):
+        rooms = {r.id: r for r in layout.rooms}
+        if room not in nodes or nodes[room].is_core or _wide_rectangle(rooms[room], building_type):
+            continue
+        labels = layout.grid.array()
+        ids = list(layout.grid.ids)
+        mask = labels == ids.index(room)
+        if "narrow" not in mask_defects(mask, rooms[room].room_type, building_type, cell):
+            continue
+        found = _pushed(layout, graph, room, labels, ids, nodes, group, building_type, min_contact)
+        if found is not None:
+            layout = found
+    return layout
+
+
+def _uncovered(mask: np.ndarray, width: float, cell: float) -> int:
+    """Cells of ``mask`` that no square ``width`` metres wide inside it covers."""
+    rr, cc = np.nonzero(mask)
+    crop = mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1]
+    return int(crop.sum() - square_cover(crop, width - 2 * EPS, cell).sum())
+
+
+def _pushes(mask: np.ndarray, givers: np.ndarray, dy: int, dx: int, reach: int) -> list[np.ndarray]:
+    """The cells ``mask`` gains pushed out 1, 2, … up to ``reach`` cells in direction (``dy``,
+    ``dx``), through its own cells and those of ``givers`` only (a core or the outline stops it):
+    one entry per depth that gains a cell."""
+    out: list[np.ndarray] = []
+    grown = mask.copy()
+    step = mask.copy()
+    h, w = mask.shape
+    for _ in range(reach):
+        moved = np.zeros_like(step)
+        moved[max(dy, 0):h + min(dy, 0), max(dx, 0):w + min(dx, 0)] = step[
+            max(-dy, 0):h + min(-dy, 0), max(-dx, 0):w + min(-dx, 0)
+        ]
+        step = moved & (grown | givers)
+        added = step & ~grown
+        if not added.any():
+            break
+        grown |= added
+        out.append(grown & ~mask)
+    return out
+
+
+#: Pushes judged in full per axis, at most (the fewest cells left outside the width's squares
+#: first, then the fewest taken).
+MAX_JUDGED = 3
+
+
+def _pushed(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    room: str,
+    labels: np.ndarray,
+    ids: list[str],
+    nodes: dict,
+    group: dict[str, str] | None,
+    building_type: str | None,
+    min_contact: float,
+) -> FloorLayout | None:
+    """The best push of ``room``'s sides that passes, or None: one side, or two opposite sides
+    each pushed part of the way (a hall 3.5 m wide between two rows of rooms that can each give
+    half a metre)."""
+    cell = layout.grid.cell_size
+    rooms = {r.id: r for r in layout.rooms}
+    key = ids.index(room)
+    mask = labels == key
+    # the labels a push may take cells from: rooms of the graph, no core, and on floors that
+    # carry walls only those of the room's own first-round region
+    may_give = np.zeros(len(ids), dtype=bool)
+    for i, rid in enumerate(ids):
+        node = nodes.get(rid)
+        may_give[i] = (
+            i != key and node is not None and not node.is_core
+            and (group is None or group.get(rid) == group.get(room))
+        )
+    inside = labels >= 0
+    givers = np.zeros_like(mask)
+    givers[inside] = may_give[labels[inside]]
+    width = needed_width(rooms[room].room_type, building_type)
+    reach = int(np.ceil(width / cell - 1e-6))
+    was = _uncovered(mask, width, cell)
+    before: dict[str, set[str]] = {}
+    passable: dict[str, tuple[int, int]] = {}
+    best: tuple[tuple[int, float], FloorLayout] | None = None
+    for axis in (((1, 0), (-1, 0)), ((0, 1), (0, -1))):
+        ahead, back = (_pushes(mask, givers, dy, dx, reach) for dy, dx in axis)
+        none = np.zeros_like(mask)
+        tried: list[tuple[int, int, np.ndarray]] = []
+        for a in range(len(ahead) + 1):
+            for b in range(len(back) + 1):
+                # one side, or both about evenly
+                if not 0 < a + b <= reach or (a and b and abs(a - b) > 1):
+                    continue
+                taken = (ahead[a - 1] if a else none) | (back[b - 1] if b else none)
+                left = _uncovered(mask | taken, width, cell)
+                if left < was:
+                    tried.append((left, int(taken.sum()), taken))
+        tried.sort(key=lambda t: t[:2])
+        for left, _, taken in tried[:MAX_JUDGED]:
+            new = labels.copy()
+            new[taken] = key
+            donors = sorted({ids[k] for k in np.unique(labels[taken])})
+            if any(not (new == ids.index(d)).any() for d in donors):
+                continue  # a room would be taken whole
+            cluster = [room, *donors]
+            for rid in cluster:
+                if rid not in before:
+                    own = labels == ids.index(rid)
+                    before[rid] = mask_defects(own, rooms[rid].room_type, building_type, cell)
+                    passable[rid] = _passable(own)
+            least = {rid: _least(nodes[rid]) for rid in cluster}
+            targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in cluster}
+            found = _judged(
+                layout, new.astype(np.int32), cluster, _kept_walls(layout, graph, set(cluster)),
+                {rid: before[rid] for rid in cluster}, least, targets,
+                {rid: passable[rid] for rid in cluster}, building_type, min_contact, own=True, as_many=True,
+            )
+            if found is not None:
+                if best is None or (left, found[0]) < best[0]:
+                    best = ((left, found[0]), found[1])
+                break  # the best of this axis
+    return None if best is None else best[1]

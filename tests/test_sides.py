@@ -1,0 +1,86 @@
+"""Rooms below their clear width widened by pushing a side out (mansion.building.sides)."""
+
+from __future__ import annotations
+
+from test_merge import graph_of, layout_of
+
+from mansion.building.merge import grid_adjacencies, mask_defects
+from mansion.building.sides import widen_sides
+from mansion.building.steps import narrow_rooms
+
+CELL = 0.5
+
+
+def picture(west: int, hall: int, east: int, rows: int = 24) -> str:
+    """Half-metre cells, the top line the floor's far side: W a room ``west`` cells deep, P a
+    kindergarten's play hall (the hub) ``hall`` cells wide, and two group rooms ``east`` cells
+    deep stacked beside it, G on top of H."""
+    top = "W" * west + "P" * hall + "G" * east
+    bottom = "W" * west + "P" * hall + "H" * east
+    return "\n".join([top] * (rows // 2) + [bottom] * (rows // 2))
+
+
+NAMES = {
+    "P": ("play_hall", "main", "play_hall", 30.0),
+    "W": ("sleep_room", "Entities", "sleep_room", 18.0),
+    "G": ("group_room_1", "Entities", "group_room", 30.0),
+    "H": ("group_room_2", "Entities", "group_room", 30.0),
+}
+EDGES = [("play_hall", "sleep_room"), ("play_hall", "group_room_1"), ("play_hall", "group_room_2")]
+
+
+def cells_of(layout, rid: str):  # noqa: ANN001, ANN201
+    return layout.grid.array() == layout.grid.ids.index(rid)
+
+
+def test_a_play_hall_between_rooms_moves_its_wall_a_metre_into_the_group_rooms() -> None:
+    # a play hall 3.5 m wide (its width 4.5 m) beside group rooms 6.5 m deep that can each give
+    # a metre: the repair's one column at a time gains nothing (4 m is as narrow as 3.5 m)
+    layout, graph = layout_of(picture(8, 7, 13), NAMES), graph_of(NAMES, EDGES)
+    assert narrow_rooms(layout.rooms, "kindergarten") == {"play_hall"}
+    wide = widen_sides(layout, graph, "kindergarten")
+    assert narrow_rooms(wide.rooms, "kindergarten") == set()
+    # the whole east side moved two cells: the hall 4.5 m × 12 m, each group room 5.5 m × 6 m
+    assert wide.room("play_hall").area == 54.0
+    assert wide.room("group_room_1").area == wide.room("group_room_2").area == 33.0
+    assert wide.room("sleep_room").area == layout.room("sleep_room").area
+    for rid in ("play_hall", "group_room_1", "group_room_2"):
+        assert not mask_defects(cells_of(wide, rid), wide.room(rid).room_type, "kindergarten", CELL)
+    # every relation keeps its wall; the floor keeps every cell
+    for a, b in EDGES:
+        assert wide.adjacency(a, b).longest >= 1.0  # type: ignore[union-attr]
+    assert (wide.grid.array() >= 0).sum() == (layout.grid.array() >= 0).sum()
+    assert wide.adjacencies == grid_adjacencies(wide.grid.array(), wide.grid.ids, CELL)
+    # a room at its width is left as it is
+    assert widen_sides(wide, graph, "kindergarten") == wide
+
+
+def test_a_hall_between_two_rooms_that_can_give_half_a_metre_each_moves_both_walls() -> None:
+    # group rooms 5 m deep on both sides (their minimum area 25 m² here): a metre from either
+    # would leave it 4 m, below its 4.5 m, so each gives half a metre
+    names = {
+        **NAMES, "W": ("group_room_3", "Entities", "group_room", 25.0),
+        "G": ("group_room_1", "Entities", "group_room", 25.0), "H": ("group_room_2", "Entities", "group_room", 25.0),
+    }
+    edges = [("play_hall", "group_room_3"), *EDGES[1:]]
+    layout, graph = layout_of(picture(10, 7, 10, rows=26), names), graph_of(names, edges)
+    wide = widen_sides(layout, graph, "kindergarten")
+    assert narrow_rooms(wide.rooms, "kindergarten") == set()
+    assert wide.room("play_hall").area == 58.5
+    assert wide.room("group_room_3").area == 58.5
+    assert wide.room("group_room_1").area == wide.room("group_room_2").area == 29.25
+
+
+def test_a_push_that_would_leave_a_neighbour_narrow_or_small_is_refused() -> None:
+    # group rooms 5 m deep beside a hall against the outline: a metre from them leaves them
+    # 4 m wide; and on a floor whose walls carry the floor above, the hub never takes floor
+    # from another first-round region
+    layout = layout_of(picture(0, 7, 10).replace("W", ""), NAMES)
+    graph = graph_of(NAMES, EDGES).model_copy()
+    graph = graph.model_copy(update={
+        "nodes": [n for n in graph.nodes if n.id != "sleep_room"],
+        "edges": [e for e in graph.edges if "sleep_room" not in (e.source, e.target)],
+    })
+    assert widen_sides(layout, graph, "kindergarten") == layout
+    wide_enough = layout_of(picture(8, 7, 13), NAMES)
+    assert widen_sides(wide_enough, graph_of(NAMES, EDGES), "kindergarten", same_region=True) == wide_enough
