@@ -17,6 +17,11 @@
 //! such a round failed the candidate filter (every supermarket's ground floor of the offline
 //! hundred, its sales floor left to snake 3 m wide between the rooms).
 //!
+//! A corridor band a courtyard or a notch of the region cuts in two goes round it, a corridor
+//! wide, on the nearer side where the cells are the round's: the cleanup had handed the piece
+//! beyond to the rooms, and the cores and rooms it served lost their walls (below width 70 / 48
+//! -> 67 / 41 on the offline hundreds).
+//!
 //! Which side of a single corridor a child goes to is chosen over every split of the children
 //! ([`Frame::split_free`]), not only in their seeds' order across it: a band deeper than a room
 //! needs draws it as a strip along the depth, so the split weighs the strips it makes against
@@ -543,6 +548,61 @@ impl Frame {
         for &c in &self.free {
             open[c] = true;
         }
+        // a corridor a courtyard or a notch cuts in two (its band not whole over a run of
+        // columns between whole ones) goes round it: a band as wide beside the band, over the run
+        // and a corridor's width past each end, on the side where every cell is the round's.
+        // Else the cleanup hands the smaller piece to the rooms and every core and room it
+        // served loses its wall (a courtyard library's or school's slab layouts all failed)
+        for (n, &vc) in plan.corridors.iter().enumerate() {
+            let mut i = 0;
+            while i < depth[n].len() {
+                if depth[n][i] == wc {
+                    i += 1;
+                    continue;
+                }
+                let start = i;
+                while i < depth[n].len() && depth[n][i] != wc {
+                    i += 1;
+                }
+                if start == 0 || i == depth[n].len() {
+                    continue; // at an end of the band: no piece beyond it
+                }
+                let (ua, ub) = (
+                    (start + u0).saturating_sub(wc).max(u0),
+                    (i + u0 + wc).min(u1 + 1),
+                );
+                // the detour: rows [a, a + wc) across the run and its ends, and at each end a leg
+                // a corridor wide from the band to it; the nearest whose cells are all the
+                // round's (or the corridor's already)
+                let cells = |a: usize| {
+                    let (lo, hi) = (a.min(vc), (a + wc).max(vc + wc));
+                    let legs = (ua..ua + wc).chain(ub.saturating_sub(wc).max(ua)..ub);
+                    (ua..ub)
+                        .flat_map(move |u| (a..a + wc).map(move |v| (u, v)))
+                        .chain(legs.flat_map(move |u| (lo..hi).map(move |v| (u, v))))
+                };
+                let ok = |a: usize| {
+                    cells(a).all(|(u, v)| {
+                        let c = self.cell(u, v);
+                        open[c] || grid.cells[c] == parent
+                    })
+                };
+                let below = (self.v0..vc.saturating_sub(wc) + 1)
+                    .rev()
+                    .take_while(|&a| a + wc <= vc);
+                let above = (vc + wc)..(self.v1 + 2).saturating_sub(wc);
+                let nearest = below
+                    .map(|a| (vc - a, a))
+                    .chain(above.map(|a| (a - vc, a)))
+                    .filter(|&(_, a)| ok(a))
+                    .min();
+                if let Some((_, a)) = nearest {
+                    for (u, v) in cells(a).collect::<Vec<_>>() {
+                        grid.cells[self.cell(u, v)] = parent;
+                    }
+                }
+            }
+        }
         // the corridor reaches what the parent must touch outside the region (a core, the
         // corridor it branches from): a stub across the band between, on a slab boundary
         for &(a, b) in &p.spec.required {
@@ -1050,6 +1110,55 @@ mod tests {
         // the order along a band: the later of a linked pair moved next to the earlier
         assert_eq!(linked_order(vec![0, 1, 2, 3], &[(0, 3)]), vec![0, 3, 1, 2]);
         assert_eq!(linked_order(vec![2, 0, 1], &[(0, 1)]), vec![2, 0, 1]);
+    }
+
+    /// 4-connected pieces of label `l`.
+    fn pieces(g: &Grid, l: Label) -> usize {
+        let mut seen = vec![false; g.cells.len()];
+        let mut n = 0;
+        for start in 0..g.cells.len() {
+            if g.cells[start] != l || seen[start] {
+                continue;
+            }
+            n += 1;
+            let mut stack = vec![start];
+            seen[start] = true;
+            while let Some(c) = stack.pop() {
+                for q in [c - 1, c + 1, c - g.w, c + g.w] {
+                    if g.cells[q] == l && !seen[q] {
+                        seen[q] = true;
+                        stack.push(q);
+                    }
+                }
+            }
+        }
+        n
+    }
+
+    #[test]
+    fn a_corridor_a_courtyard_cuts_in_two_goes_round_it() {
+        // the wing with a courtyard 6 cells wide and 5 deep in its middle: corridor bands across
+        // the courtyard's rows stop at it, and the piece beyond would go to the rooms
+        let mut rows: Vec<String> = vec!["5".to_string() + &"0".repeat(20); 13];
+        rows[0] = "#".to_string() + &"0".repeat(20);
+        for row in rows.iter_mut().skip(4).take(5) {
+            row.replace_range(8..14, "######");
+        }
+        let rows: Vec<&str> = rows.iter().map(|r| r.as_str()).collect();
+        let grid = parse_rows(&rows);
+        let (_, spec) = wing();
+        let walls = Walls::none(grid.w, grid.h);
+        let opts = options(true);
+        let p = Prepared::new(&grid, &walls, &spec, &opts, 6, 0);
+        let layouts = layouts(&p, &opts.clear);
+        assert!(!layouts.is_empty());
+        let mut s = crate::cleanup::Scratch::new(grid.cells.len());
+        let mut passed = 0;
+        for g in layouts {
+            assert_eq!(pieces(&g, 0), 1, "the corridor is one piece");
+            passed += usize::from(p.finish(g, &mut s).is_ok());
+        }
+        assert!(passed > 0, "some slab layout passes the candidate filter");
     }
 
     /// A wing whose lift (5) stands at its west edge with the outside beyond it to the south: a
