@@ -1,5 +1,5 @@
-"""Rooms widened from one side: a room below its clear width moves one of its walls out into the
-rooms beside it, whole rows or columns at a time (issue 14).
+"""Rooms widened from the side: a room below its clear width moves a wall out into the rooms
+beside it, whole rows or columns at a time (issue 14).
 
 A room that takes what its neighbours leave (the floor's hub, a kindergarten's play hall, a
 library's reading hall, a supermarket's sales floor) or one grown between two others can come
@@ -8,17 +8,20 @@ The solver's repair moves one row or column at a time and takes a move only when
 room's shortfall, and a room 3.5 m wide is as narrow at 4 m as at 3.5: it takes none. An
 architect moves the wall the whole metre.
 
-:func:`widen_sides` takes each room below its width (but cores) and, for each of the four
-directions, pushes the room's cells out that many cells (one to its width's, the fewest first):
-every cell of a neighbour within that reach of the room in that direction goes to the room, across
-the whole side, so the walls it moves stay straight. The donors are the rooms those cells belonged
-to (never a core; on floors that carry walls, only rooms of the room's own first-round region).
-A push is kept under the rules of a family re-laid (:func:`mansion.building.recut._judged` with
-``own``): the room comes out no longer below its width, no room of them gains a defect of ``mansion
-eval realism`` it lacked, they have fewer in all, each stays in one piece at its minimum area with
-no new part one cell wide, and every relation keeps its wall. Of the pushes that pass, the one
-with the fewest defects, then the rooms closest to their planned areas, wins. Nothing of the
-program changes, so nothing is recorded.
+:func:`widen_sides` takes each room below its width (but cores) and, along each axis, pushes it
+out on one side, or on both opposite sides about evenly, by up to its width in cells: every cell
+of a neighbour within that reach of the room in that direction goes to the room, across the whole
+side, so the walls it moves stay straight (a core or the outline stops it). The donors are the
+rooms those cells belonged to (never a core; on floors that carry walls, only rooms of the room's
+own first-round region). Of the pushes that leave fewer of the room's cells outside its width's
+squares, those that leave fewest (then take fewest cells) are judged, :data:`MAX_JUDGED` per axis,
+under the rules of a family re-laid (:func:`mansion.building.recut._judged`): no room of them
+gains a defect of ``mansion eval realism`` it lacked, each stays in one piece at its minimum area
+with no new part one cell wide, and every relation keeps its wall. The room need not come out at
+its width: what is left of its strips (the arm of an L) goes to the mends after this one (a hall
+made of it, :mod:`mansion.building.halls`). Of the pushes that pass, the one leaving fewest cells
+outside the squares wins, then the fewest defects, then the rooms closest to their planned areas.
+Nothing of the program changes, so nothing is recorded.
 """
 
 from __future__ import annotations
@@ -28,16 +31,12 @@ import numpy as np
 from mansion.building.load_bearing import first_round_groups
 from mansion.building.merge import mask_defects, square_cover
 from mansion.building.recut import _judged, _kept_walls, _least, _passable, _wide_rectangle
-from mansion.models.graph import RoomGraph
+from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
 from mansion.models.room_shape import EPS
 
 __all__ = ["widen_sides"]
-
-#: The four directions a wall is pushed in, as (rows, columns) steps of the label grid.
-DIRECTIONS = ((1, 0), (-1, 0), (0, 1), (0, -1))
-
 
 def widen_sides(
     layout: FloorLayout,
@@ -46,8 +45,8 @@ def widen_sides(
     min_contact: float = 1.0,
     same_region: bool = False,
 ) -> FloorLayout:
-    """``layout`` with each room below its clear width widened by pushing one of its sides out
-    into its neighbours where the module's rules allow, rooms in the order of their ids.
+    """``layout`` with each room below its clear width widened by pushing its sides out into its
+    neighbours where the module's rules allow, rooms in the order of their ids.
     ``same_region``: only into rooms of its own first-round region (floors that carry walls)."""
     nodes = {n.id: n for n in graph.nodes}
     group = first_round_groups(graph) if same_region else None
@@ -107,7 +106,7 @@ def _pushed(
     room: str,
     labels: np.ndarray,
     ids: list[str],
-    nodes: dict,
+    nodes: dict[str, RoomNode],
     group: dict[str, str] | None,
     building_type: str | None,
     min_contact: float,
