@@ -34,9 +34,10 @@ beside it, a flat's second bedroom into its living room), each recorded. Then ro
 clear width are cut again as rectangles where a neighbour can give them floor
 (:func:`mansion.building.recut.recut_narrow_rooms`), the strips of those still below it are
 handed to the rooms beside them (:func:`mansion.building.recut.hand_off_strips`); then, in the
-order of :data:`NARROW_MENDS`, a region and the rooms cut from it, one of them still below its
-width, are laid out again as a row along one side (:mod:`mansion.building.families`: an open
-office curled round its meeting room), a room below its width only by a pocket beside a core
+order of :data:`NARROW_MENDS`, a room still below its width pushes its walls out into the rooms
+beside it (:mod:`mansion.building.sides`), a region and the rooms cut from it, one of them still
+below its width, are laid out again as a row along one side (:mod:`mansion.building.families`:
+an open office curled round its meeting room), a room below its width only by a pocket beside a core
 keeps it as a store (:mod:`mansion.building.stores`), a room below its width by arms that carry
 its doors keeps them as halls (:mod:`mansion.building.halls`: a play hall's arm to its sleep
 room becomes a corridor), what is still below its width merges like a room too small where the
@@ -56,7 +57,6 @@ from typing import Any
 from shapely.geometry import Polygon
 
 from mansion.building.checks import check_building
-from mansion.building.sides import widen_sides
 from mansion.building.load_bearing import (
     SkeletonSeedPlanner,
     carry_walls,
@@ -70,6 +70,7 @@ from mansion.building.families import relay_families
 from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
+from mansion.building.sides import widen_sides
 from mansion.building.stores import store_pockets
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
@@ -346,9 +347,11 @@ MERGE_NARROW = True
 #: (:func:`mansion.building.stores.store_pockets`). Measured on the offline hundreds: below width
 #: 176 -> 162 (25 stores; malls 97 and 55 hold 22 of them), second hundred 134 -> 133.
 STORE_POCKETS = True
-#: The mends of rooms still below their width, in order: "families" (a region and the rooms cut
-#: from it laid out again as a row, :func:`mansion.building.families.relay_families`), "stores"
-#: (:data:`STORE_POCKETS`), "halls" (a room's arms that carry its doors made halls off it,
+#: The mends of rooms still below their width, in order: "sides" (a room's walls pushed out into
+#: the rooms beside it, :func:`mansion.building.sides.widen_sides`; first, below width 75 / 56 ->
+#: 75 / 51 on the offline hundreds), "families" (a region and the rooms cut from it laid out again
+#: as a row, :func:`mansion.building.families.relay_families`), "stores" (:data:`STORE_POCKETS`),
+#: "halls" (a room's arms that carry its doors made halls off it,
 #: :func:`mansion.building.halls.hall_arms`; measured alone on the offline hundreds, below width
 #: 101 / 66 -> 90 / 60 with 14 / 11 halls), "merges" (:data:`MERGE_NARROW`), "drops" (a family
 #: too tight for its rooms laid out again without one). Those that keep every room come first:
@@ -684,7 +687,8 @@ def mend_narrow(
         return dict.fromkeys(narrow_rooms(lay.rooms, kind), NARROW_WHY)
 
     mends: dict[str, Callable[[FloorLayout, RoomGraph], tuple[FloorLayout, RoomGraph, list[str]]]] = {
-        # a room still below its width pushes one of its walls out into the rooms beside it
+        # a room still below its width pushes its walls out into the rooms beside it, whole rows
+        # or columns at a time (a play hall 3.5 m wide a metre into the group rooms beside it)
         "sides": lambda lay, g: (widen_sides(lay, g, kind, min_contact=min_contact, same_region=carried), g, []),
         # a region and the rooms cut from it, one of them still below its width, laid out
         # again as a row along one side with the region's room taking the rest
