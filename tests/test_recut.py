@@ -129,19 +129,25 @@ CCCCCCCCCCC
 
 
 def test_generated_floors_cut_rooms_again_before_merging_or_dropping_them() -> None:
-    """Buildings on load-bearing walls of the realism hundreds lay a room out below its minimum
-    (an office's meeting room at 7 m² against its 10 m²): it is cut again inside the region it
-    was cut from (its bay of the open office), the floor records it, the room stays in the graph
-    and is no longer unfit. The first of a few buildings that did so when this was written is
-    used: which rooms come out unfit changes with every change to the layout."""
+    """Buildings of the realism hundreds lay a room out below its minimum (a kindergarten's
+    cloakroom, a supermarket's toilet, a hotel's guest room): it is cut again inside the region it
+    was cut from, the floor records it, the room stays in the graph and is no longer unfit, unless
+    a later mend dropped it from a region too tight for all its rooms and says so (an office's
+    meeting room cut again in a bay whose open office stays too narrow with it). The first of a
+    few buildings that did so when this was written is used: which rooms come out unfit changes
+    with every change to the layout."""
     from mansion.building.steps import unfit_rooms
 
-    b, notes = first_noted((173, 131, 89, 88), " cut again from ", copies=False)
-    assert b.program.load_bearing_walls
+    _, notes = first_noted((78, 135, 166, 174), " cut again from ", copies=False)
+    kept = 0
     for f, note in notes:
         room = note.split(" cut again")[0]
+        if any(n.startswith(f"{room} dropped") for n in f.relaxations):
+            continue
         assert room in {n.id for n in f.graph.nodes}
         assert room not in unfit_rooms(f.layout.rooms, f.graph)
+        kept += 1
+    assert kept
 
 
 # A mall's toilet cluster as the layout left it: D the toilet lobby off the concourse A, E and F

@@ -15,7 +15,17 @@ the cells they hold, the rooms cut from the head are laid side by side in a band
 (each a run of whole columns with its minimum area and a share of the rest by its planned area),
 a band as deep as their areas need or as the widest of their widths asks, and the head takes the
 rest. Every side, depth and order of the rooms (their order along the side as they lie now, and
-every order of up to :data:`ALL_ORDERS` rooms) is tried. A re-layout is kept under the rules of
+every order of up to :data:`ALL_ORDERS` rooms) is tried. So are a band short of the side, the
+head keeping one end of it (where it meets a core or a room it keeps a wall with), and two bands
+along opposite sides with the head between them, the rooms split between them where they lie now
+(the ones nearer a side in its band): a bay 6 m wide holds a meeting room and two private offices
+at its two ends where a row of the three along either side leaves one too narrow or the open
+office too narrow.
+
+A head whose family is too large to lay out so (the hub, whose family is the floor; more than
+:data:`MAX_FAMILY` rooms; rooms with rooms of their own) still moves its islands, the rooms cut
+from it that touch nothing but it and each other, to a side: a reading hall 8 m wide with two
+study rooms in its middle, 2.5 m wide on either side of them, gets them along one wall. A re-layout is kept under the rules of
 a cluster re-laid in :mod:`mansion.building.recut` (every room in one piece, at its minimum area,
 with a usable square, no new part one cell wide, every relation keeping its wall) and only when
 no room gains a defect of ``mansion eval realism``'s that it lacked and the family has fewer in
@@ -43,14 +53,14 @@ from shapely.geometry import Polygon
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.recut import (
-    _judged, _least, _wide_rectangle, band_shares, cluster_cells, in_a_row,
+    _judged, _least, _wide_rectangle, area_shares, band_shares, cluster_cells, in_a_row,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
 from mansion.models.room_shape import EPS, mostly_narrower
 
-__all__ = ["ALL_ORDERS", "MAX_FAMILY", "relay_families"]
+__all__ = ["ALL_ORDERS", "MAX_FAMILY", "relay_families", "touching"]
 
 #: Rooms cut from a head, at most, for its family to be laid out again.
 MAX_FAMILY = 6
@@ -60,6 +70,8 @@ MAX_FAMILY = 6
 ALL_ORDERS = 3
 
 
+#: How the rooms cut from the head lie after a re-layout, in its note, by their rows.
+ROWS = {1: "in a row along it", 2: "in two rows, along opposite sides of it"}
 #: Why a family is laid out again, in its note.
 WHY = "a room of it laid out narrower than its clear width"
 
@@ -83,27 +95,33 @@ def relay_families(
     parent = cut_parents(graph)
     heads: set[str] = set()
     for room in layout.rooms:
-        if room.id not in parent or _wide_rectangle(room, building_type):
+        if (room.id not in parent and room.id != graph.hub.id) or _wide_rectangle(room, building_type):
             continue
         # room_shape's measure, cached for the outlines the earlier mends measured already
         if mostly_narrower(Polygon(room.polygon, room.holes), needed_width(room.room_type, building_type)):
-            heads.update((room.id, parent[room.id]))
+            heads.update((room.id, parent.get(room.id, room.id)))
     for head in sorted(heads):
         # the cut tree as it stands: a family laid out without a room has one room fewer
         parent = cut_parents(graph)
         nodes = {n.id: n for n in graph.nodes}
+        if head not in nodes or nodes[head].is_core:
+            continue
         members = sorted(r for r, up in parent.items() if up == head)
         if (
-            head not in nodes or head == graph.hub.id or nodes[head].is_core
-            or not 1 <= len(members) <= MAX_FAMILY
+            head == graph.hub.id or not 1 <= len(members) <= MAX_FAMILY
             or any(up in members for up in parent.values()) or any(nodes[m].is_core for m in members)
         ):
-            continue
+            # a head whose family is too large to lay out again (the hub: the floor) still
+            # moves the rooms it closes round to its sides: a reading hall 8 m wide with two
+            # study rooms in its middle, 2.5 m wide on either side of them
+            members = [] if drop else _islands(layout, head, members, parent)
+            if not 1 <= len(members) <= MAX_FAMILY:
+                continue
         if not drop:
             found = _relaid_family(layout, graph, head, members, building_type, min_contact)
             if found is not None:
                 layout = found[1]
-                notes.append(f"{head} laid out again with {', '.join(members)} in a row along it ({WHY})")
+                notes.append(f"{head} laid out again with {', '.join(members)} {ROWS[found[2]]} ({WHY})")
             continue
         # too tight for all its rooms (the pass without drops found no re-layout): without the
         # smallest room whose going lets it be laid out, dropped as mansion.building.merge drops
@@ -122,10 +140,38 @@ def relay_families(
                 rest = ", ".join(m for m in members if m != gone)
                 notes.append(
                     f"{gone} dropped, its floor given to {head}; {head} laid out again with {rest} "
-                    f"in a row along it ({WHY})"
+                    f"{ROWS[found[2]]} ({WHY})"
                 )
                 break
     return layout, graph, notes
+
+
+def touching(layout: FloorLayout, room: str) -> set[str | None]:
+    """The rooms (cores too) with a cell beside one of ``room``'s, None for the outline."""
+    labels = np.pad(layout.grid.array(), 1, constant_values=-1)
+    ids = list(layout.grid.ids)
+    mask = labels == ids.index(room)
+    ring = np.zeros_like(mask)
+    ring[1:] |= mask[:-1]
+    ring[:-1] |= mask[1:]
+    ring[:, 1:] |= mask[:, :-1]
+    ring[:, :-1] |= mask[:, 1:]
+    return {ids[v] if v >= 0 else None for v in np.unique(labels[ring & ~mask]).tolist()}
+
+
+def _islands(layout: FloorLayout, head: str, members: list[str], parent: dict[str, str]) -> list[str]:
+    """The rooms of ``members`` (cut from ``head``) with no rooms of their own that touch only
+    ``head`` and each other: no other room, no core, not the outline."""
+    ids = set(layout.grid.ids)
+    cores = {r.id for r in layout.rooms if r.is_core}
+    found = {m for m in members if m not in set(parent.values()) and m not in cores and m in ids}
+    touches = {m: touching(layout, m) for m in found}
+    while True:
+        # a room beside one that is not an island is not one either
+        gone = {m for m in found if not touches[m] <= {head, *found}}
+        if not gone:
+            return sorted(found)
+        found -= gone
 
 
 def _relaid_family(
@@ -135,9 +181,10 @@ def _relaid_family(
     members: list[str],
     building_type: str | None,
     min_contact: float,
-) -> tuple[float, FloorLayout] | None:
-    """(its score: defects, then the rooms' miss from their planned areas; the layout) of the
-    best re-layout of ``head``'s family that passes, or None."""
+) -> tuple[float, FloorLayout, int] | None:
+    """(its score: defects, then the rooms' miss from their planned areas; the layout; the rows
+    of rooms along the head, 1 or 2) of the best re-layout of ``head``'s family that passes, or
+    None."""
     family = [head, *members]
     labels, cell, keys, region, keep, passable = cluster_cells(layout, graph, family)
     rooms = {r.id: r for r in layout.rooms}
@@ -146,56 +193,114 @@ def _relaid_family(
     least = {rid: _least(nodes[rid]) for rid in family}
     targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in family}
     width = {m: needed_width(rooms[m].room_type, building_type) for m in members}
-    deep = max(width.values())
-    best: tuple[float, FloorLayout] | None = None
+    head_width = needed_width(rooms[head].room_type, building_type)
+    best: tuple[float, FloorLayout, int] | None = None
     tried: set[bytes] = set()
     for turn in range(4):
         view = np.rot90(region, turn)
         rows = np.nonzero(view.any(axis=1))[0]
-        cols_all = np.nonzero(view.any(axis=0))[0]
-        span = len(cols_all) * cell
-        # the members' centroids along the band's side, as they lie now
-        along = {m: float(np.nonzero(np.rot90(labels == keys[m], turn))[1].mean()) for m in members}
-        natural = sorted(members, key=lambda m: (along[m], m))
-        orders = (
-            list(itertools.permutations(members)) if len(members) <= ALL_ORDERS
-            else [tuple(natural), tuple(reversed(natural))]
-        )
-        need = sum(targets[m] for m in members)
-        depths = sorted({
-            int(np.ceil(need / span / cell - 1e-6)), int(np.ceil(need / span / cell - 1e-6)) + 1,
-            int(np.ceil(deep / cell - 1e-6)),
-        })
-        for depth in depths:
-            if not 1 <= depth < len(rows):
-                continue
-            band = np.zeros_like(view)
-            band[rows[0]:rows[0] + depth] = view[rows[0]:rows[0] + depth]
-            shares = band_shares(band, members, least, targets, cell)
-            # the head keeps what the band leaves, which must hold its minimum
-            if shares is None or float((view & ~band).sum()) * cell * cell + EPS < least[head]:
-                continue
-            for order in orders:
-                turned = np.rot90(labels, turn).copy()
-                turned[view & ~band] = keys[head]
-                if not in_a_row(turned, band, order, shares, keys, cell):
+        span = int(view.any(axis=0).sum()) * cell
+        turned_labels = np.rot90(labels, turn)
+        # the members' centroids along the band's side and across it, as they lie now
+        along = {m: float(np.nonzero(turned_labels == keys[m])[1].mean()) for m in members}
+        across = {m: float(np.nonzero(turned_labels == keys[m])[0].mean()) for m in members}
+        groupings: list[list[list[str]]] = [[members]]
+        if turn < 2 and len(members) > 1:
+            # or in two rows, along this side and the opposite one, the head between them (a
+            # bay 5 m wide with its meeting room at one end and its private offices at the
+            # other): the members split where they lie now, the nearer this side in its row
+            by_across = sorted(members, key=lambda m: (across[m], m))
+            groupings += [[by_across[:k], by_across[k:]] for k in range(1, len(members))]
+        for groups in groupings:
+            for parts, orders in _bands(view, rows, groups, along, least, targets, width, span, cell):
+                band = np.logical_or.reduce(parts)
+                shares: dict[str, float] | None = {}
+                for part, group in zip(parts, groups):
+                    got = band_shares(part, group, least, targets, cell)
+                    shares = None if got is None or shares is None else {**shares, **got}
+                # the head keeps what the bands leave, which must hold its minimum
+                if shares is None or float((view & ~band).sum()) * cell * cell + EPS < least[head]:
                     continue
-                # a room that was at its width must be as wide and as deep as it (fewer columns
-                # or rows of the band hold no square of it): a quick refusal before the measures
-                if any(
-                    min(depth, int((band & (turned == keys[m])).any(axis=0).sum())) * cell + EPS < width[m]
-                    for m in members if "narrow" not in before[m]
-                ):
-                    continue
-                new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
-                seen = new.tobytes()
-                if seen in tried:
-                    continue
-                tried.add(seen)
-                found = _judged(
-                    layout, new, family, keep, before, least, targets, passable, building_type, min_contact, own=True,
-                )
-                if found is not None and (best is None or found[0] < best[0] - EPS):
-                    best = found
+                variants = [(order, shares) for order in orders]
+                if len(groups) == 1:
+                    # or a row short of the side, the head keeping an end of the band (where it
+                    # meets a core, or a room it must keep a wall with): the rooms at their
+                    # planned areas, or the head's end as long as its width (a square of it
+                    # then reaches into the band)
+                    area = float(band.sum()) * cell * cell
+                    depth = int(band.any(axis=1).sum()) * cell
+                    for end in sorted({area - sum(targets[m] for m in members), head_width * depth}):
+                        short = area_shares(area - end, members, least, targets) if end > EPS else None
+                        if short is not None:
+                            short[head] = end
+                            variants += [(((head, *order[0]),), short) for order in orders]
+                            variants += [(((*order[0], head),), short) for order in orders]
+                for order, sizes in variants:
+                    turned = turned_labels.copy()
+                    turned[view & ~band] = keys[head]
+                    if not all(in_a_row(turned, part, row, sizes, keys, cell) for part, row in zip(parts, order)):
+                        continue
+                    # a room that was at its width must be as wide and as deep as it (fewer
+                    # columns or rows of the band hold no square of it): a quick refusal
+                    # before the measures
+                    if any(
+                        min(
+                            int((turned == keys[m]).any(axis=1).sum()), int((turned == keys[m]).any(axis=0).sum()),
+                        ) * cell + EPS < width[m]
+                        for m in members if "narrow" not in before[m]
+                    ):
+                        continue
+                    new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
+                    seen = new.tobytes()
+                    if seen in tried:
+                        continue
+                    tried.add(seen)
+                    found = _judged(
+                        layout, new, family, keep, before, least, targets, passable, building_type, min_contact,
+                        own=True,
+                    )
+                    if found is not None and (best is None or found[0] < best[0] - EPS):
+                        best = (*found, len(groups))
     return best
 
+
+def _orders(group: list[str], along: dict[str, float], every: int) -> list[tuple[str, ...]]:
+    """The orders of ``group`` along its band tried: every order of up to ``every`` rooms, else
+    the order they lie in now and its reverse."""
+    if len(group) <= every:
+        return list(itertools.permutations(group))
+    natural = sorted(group, key=lambda m: (along[m], m))
+    return [tuple(natural), tuple(reversed(natural))]
+
+
+def _bands(
+    view: np.ndarray, rows: np.ndarray, groups: list[list[str]], along: dict[str, float],
+    least: dict[str, float], targets: dict[str, float], width: dict[str, float], span: float, cell: float,
+) -> Iterable[tuple[list[np.ndarray], list[tuple[tuple[str, ...], ...]]]]:
+    """(the cells of each group's band, the orders of the rooms in them to try) of each choice
+    of depths for ``groups``' rows: the first along the top rows of ``view``, the second (if any)
+    along its bottom rows. A band is as deep as its rooms' planned areas or their minimums need
+    over ``span`` (or a row more) or as its widest room's width asks; bands that meet or leave the head no row are
+    skipped."""
+    options = []
+    for group in groups:
+        need = int(np.ceil(sum(targets[m] for m in group) / span / cell - 1e-6))
+        # or as their minimums need (and a row more: whole columns round a room's share down),
+        # where the head needs the rest for its own minimum
+        tight = int(np.ceil(sum(least[m] for m in group) / span / cell - 1e-6))
+        deep = int(np.ceil(max(width[m] for m in group) / cell - 1e-6))
+        options.append(sorted({need, need + 1, tight, tight + 1, deep}))
+    # two rows of rooms keep the orders few: both sides' orders are tried together
+    every = ALL_ORDERS if len(groups) == 1 else 2
+    orders = list(itertools.product(*(_orders(g, along, every) for g in groups)))
+    for depths in itertools.product(*options):
+        if any(d < 1 for d in depths) or sum(depths) >= len(rows):
+            continue
+        top = np.zeros_like(view)
+        top[rows[0]:rows[0] + depths[0]] = view[rows[0]:rows[0] + depths[0]]
+        parts = [top]
+        if len(depths) > 1:
+            bottom = np.zeros_like(view)
+            bottom[rows[-1] + 1 - depths[1]:rows[-1] + 1] = view[rows[-1] + 1 - depths[1]:rows[-1] + 1]
+            parts.append(bottom)
+        yield parts, orders

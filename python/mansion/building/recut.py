@@ -1020,9 +1020,18 @@ def band_shares(
     minimum area, and what the band holds beyond the minimums in proportion to what its planned
     area asks beyond its own, the rest spread evenly; None when the band holds fewer columns than
     the members or less than their minimums."""
-    columns = int(band.any(axis=0).sum())
-    room_left = float(band.sum()) * cell * cell - sum(least[m] for m in members)
-    if columns < len(members) or room_left < 0:
+    if int(band.any(axis=0).sum()) < len(members):
+        return None
+    return area_shares(float(band.sum()) * cell * cell, members, least, targets)
+
+
+def area_shares(
+    area: float, members: list[str], least: dict[str, float], targets: dict[str, float],
+) -> dict[str, float] | None:
+    """Each of ``members``' share of ``area`` m² (:func:`band_shares`), or None when it holds
+    less than their minimums."""
+    room_left = area - sum(least[m] for m in members)
+    if room_left < 0:
         return None
     extra = sum(targets[m] - least[m] for m in members)
     scale = min(1.0, room_left / extra) if extra > 0 else 0.0
