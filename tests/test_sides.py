@@ -5,7 +5,7 @@ from __future__ import annotations
 from test_merge import graph_of, layout_of
 
 from mansion.building.merge import grid_adjacencies, mask_defects
-from mansion.building.sides import widen_sides
+from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.steps import narrow_rooms
 
 CELL = 0.5
@@ -84,3 +84,38 @@ def test_a_push_that_would_leave_a_neighbour_narrow_or_small_is_refused() -> Non
     assert widen_sides(layout, graph, "kindergarten") == layout
     wide_enough = layout_of(picture(8, 7, 13), NAMES)
     assert widen_sides(wide_enough, graph_of(NAMES, EDGES), "kindergarten", same_region=True) == wide_enough
+
+
+# A private office O 2.5 m × 3 m (7.5 m², its minimum 8 m²) between a store S and a meeting room
+# M, all off a corridor C 1.5 m wide (an office's corridor width: it can give nothing).
+SMALL = "\n".join(["SSSOOOOOMMMMMMMM"] * 6 + ["CCCCCCCCCCCCCCCC"] * 3)
+SMALL_NAMES = {
+    "C": ("corridor", "main", "corridor", 4.0),
+    "S": ("storage_1", "Entities", "storage", 2.0),
+    "O": ("private_office_1", "Entities", "private_office", 8.0),
+    "M": ("meeting_room_1", "Entities", "meeting_room", 10.0),
+}
+SMALL_EDGES = [("corridor", "storage_1"), ("corridor", "private_office_1"), ("corridor", "meeting_room_1")]
+
+
+def test_a_room_below_its_minimum_area_takes_what_it_needs_from_the_room_beside_it() -> None:
+    layout, graph = layout_of(SMALL, SMALL_NAMES), graph_of(SMALL_NAMES, SMALL_EDGES)
+    assert layout.room("private_office_1").area == 7.5
+    grown = enlarge_rooms(layout, graph, "office")
+    # the wall moved half a metre into the meeting room: 3 m × 3 m and 3.5 m × 3 m
+    assert grown.room("private_office_1").area == 9.0
+    assert grown.room("meeting_room_1").area == 10.5
+    assert grown.room("corridor").area == layout.room("corridor").area
+    assert grown.room("storage_1").area == layout.room("storage_1").area
+    for rid in ("private_office_1", "meeting_room_1", "corridor", "storage_1"):
+        assert not mask_defects(cells_of(grown, rid), grown.room(rid).room_type, "office", CELL)
+    for a, b in SMALL_EDGES:
+        assert grown.adjacency(a, b).longest >= 1.0  # type: ignore[union-attr]
+    assert grown.adjacencies == grid_adjacencies(grown.grid.array(), grown.grid.ids, CELL)
+    # a room at its minimum is left as it is
+    assert enlarge_rooms(grown, graph, "office") == grown
+    # a neighbour that would fall below its own minimum gives nothing
+    narrower = SMALL.replace("OOOOOMMMMMMMM", "OOOOOMMMMMMM.").replace("CCCCCCCCCCCCCCCC", "CCCCCCCCCCCCCCC.")
+    tight = layout_of(narrower, SMALL_NAMES)
+    assert tight.room("meeting_room_1").area == 10.5
+    assert enlarge_rooms(tight, graph, "office") == tight

@@ -10,7 +10,8 @@ a time cannot mend that (:mod:`mansion.building.recut` finds no rectangle that l
 office whole); the family together can.
 
 :func:`relay_families` takes each family with a room below its clear width: a head (not the hub,
-nor a core) and the one to :data:`MAX_FAMILY` rooms cut from it, none with rooms of its own. In
+nor a core) and the one to :data:`MAX_FAMILY` rooms cut from it, none with rooms of its own (a
+head whose family is larger, below). In
 the cells they hold, the rooms cut from the head are laid side by side in a band along one side
 (each a run of whole columns with its minimum area and a share of the rest by its planned area),
 a band as deep as their areas need or as the widest of their widths asks, and the head takes the
@@ -20,18 +21,18 @@ head keeping one end of it (where it meets a core or a room it keeps a wall with
 along opposite sides with the head between them, the rooms split between them where they lie now
 (the ones nearer a side in its band): a bay 6 m wide holds a meeting room and two private offices
 at its two ends where a row of the three along either side leaves one too narrow or the open
-office too narrow.
-
-A head whose family is too large to lay out so (the hub, whose family is the floor; more than
-:data:`MAX_FAMILY` rooms; rooms with rooms of their own) still moves its islands, the rooms cut
-from it that touch nothing but it and each other, to a side: a reading hall 8 m wide with two
-study rooms in its middle, 2.5 m wide on either side of them, gets them along one wall. A re-layout is kept under the rules of
-a cluster re-laid in :mod:`mansion.building.recut` (every room in one piece, at its minimum area,
+office too narrow. A re-layout is kept under the rules of a cluster re-laid in :mod:`mansion.building.recut` (every room in one piece, at its minimum area,
 with a usable square, no new part one cell wide, every relation keeping its wall) and only when
 no room gains a defect of ``mansion eval realism``'s that it lacked and the family has fewer in
 total; of those, the fewest defects, then the rooms closest to their planned areas. The family's
 cells stay its own, so no wall between first-round regions moves (floors that carry walls keep
 them). Nothing of the program changes.
+
+A head whose family is too large to lay out so (the hub, whose family is the floor; more than
+:data:`MAX_FAMILY` rooms; rooms with rooms of their own) still moves its islands, the rooms cut
+from it that touch nothing but it and each other, to a side the same way: a reading hall 8 m
+wide with two study rooms in its middle, 2.5 m wide on either side of them, gets them along one
+wall.
 
 A family no re-layout mends is often one its region cannot hold at the rooms' minimums (a bay
 5 m × 15 m asked for an open office of 30 m² and five cellular rooms). A second pass, after the

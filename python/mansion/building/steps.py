@@ -70,7 +70,7 @@ from mansion.building.families import relay_families
 from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
-from mansion.building.sides import widen_sides
+from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.stores import store_pockets
 from mansion.exceptions import InfeasibleLayoutError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
@@ -624,6 +624,12 @@ def solve_building_floor(
             layout, graph, unfit_of, program.building_type,
             min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
         )
+        # a room still too small pushes its walls out into the rooms beside it, as far as its
+        # minimum needs, where they can give (mansion.building.sides)
+        layout = enlarge_rooms(
+            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+            same_region=program.load_bearing_walls,
+        )
         layout, graph, merged = merge_unfit_rooms(
             layout, graph, unfit_of, program.building_type,
             same_region=program.load_bearing_walls, keep=asked,
@@ -656,6 +662,10 @@ def solve_building_floor(
             min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
         )
         mended += recut_late
+        layout = enlarge_rooms(
+            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+            same_region=program.load_bearing_walls,
+        )
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
