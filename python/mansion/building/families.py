@@ -11,22 +11,22 @@ office whole); the family together can.
 
 :func:`relay_families` takes each family with a room below its clear width: a head (not the hub,
 nor a core) and the one to :data:`MAX_FAMILY` rooms cut from it, none with rooms of its own (a
-head whose family is larger, below). In
-the cells they hold, the rooms cut from the head are laid side by side in a band along one side
-(each a run of whole columns with its minimum area and a share of the rest by its planned area),
-a band as deep as their areas need or as the widest of their widths asks, and the head takes the
-rest. Every side, depth and order of the rooms (their order along the side as they lie now, and
-every order of up to :data:`ALL_ORDERS` rooms) is tried. So are a band short of the side, the
-head keeping one end of it (where it meets a core or a room it keeps a wall with), and two bands
-along opposite sides with the head between them, the rooms split between them where they lie now
-(the ones nearer a side in its band): a bay 6 m wide holds a meeting room and two private offices
-at its two ends where a row of the three along either side leaves one too narrow or the open
-office too narrow. A re-layout is kept under the rules of a cluster re-laid in :mod:`mansion.building.recut` (every room in one piece, at its minimum area,
-with a usable square, no new part one cell wide, every relation keeping its wall) and only when
-no room gains a defect of ``mansion eval realism``'s that it lacked and the family has fewer in
-total; of those, the fewest defects, then the rooms closest to their planned areas. The family's
-cells stay its own, so no wall between first-round regions moves (floors that carry walls keep
-them). Nothing of the program changes.
+larger family, below). In the cells they hold, the rooms cut from the head are laid side by side
+in a band along one side (each a run of whole columns with its minimum area and a share of the
+rest by its planned area), a band as deep as their planned areas or their minimums need or as the
+widest of their widths asks, and the head takes the rest. Every side, depth and order of the
+rooms (their order along the side as they lie now, and every order of up to :data:`ALL_ORDERS`
+rooms) is tried. So are a band short of the side, the head keeping one end of it (where it meets
+a core or a room it keeps a wall with), and two bands along opposite sides with the head between
+them, the rooms split between them where they lie now (the ones nearer a side in its band): a bay
+6 m wide holds a meeting room and two private offices at its two ends where a row of the three
+along either side leaves one too narrow or the open office too narrow. A re-layout is kept under
+the rules of a cluster re-laid in :mod:`mansion.building.recut` (every room in one piece, at its
+minimum area, with a usable square, no new part one cell wide, every relation keeping its wall)
+and only when no room gains a defect of ``mansion eval realism``'s that it lacked and the family
+has fewer in total; of those, the fewest defects, then the rooms closest to their planned areas.
+The family's cells stay its own, so no wall between first-round regions moves (floors that carry
+walls keep them). Nothing of the program changes.
 
 A head whose family is too large to lay out so (the hub, whose family is the floor; more than
 :data:`MAX_FAMILY` rooms; rooms with rooms of their own) still moves its islands, the rooms cut
@@ -165,7 +165,8 @@ def _islands(layout: FloorLayout, head: str, members: list[str], parent: dict[st
     ``head`` and each other: no other room, no core, not the outline."""
     ids = set(layout.grid.ids)
     cores = {r.id for r in layout.rooms if r.is_core}
-    found = {m for m in members if m not in set(parent.values()) and m not in cores and m in ids}
+    heads = set(parent.values())
+    found = {m for m in members if m not in heads and m not in cores and m in ids}
     touches = {m: touching(layout, m) for m in found}
     while True:
         # a room beside one that is not an island is not one either
@@ -195,6 +196,8 @@ def _relaid_family(
     targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in family}
     width = {m: needed_width(rooms[m].room_type, building_type) for m in members}
     head_width = needed_width(rooms[head].room_type, building_type)
+    # the widths the rooms at their width now must keep (the quick refusal below)
+    firm = {m: 0.0 if "narrow" in before[m] else width[m] for m in members}
     best: tuple[float, FloorLayout, int] | None = None
     tried: set[bytes] = set()
     for turn in range(4):
@@ -213,7 +216,7 @@ def _relaid_family(
             by_across = sorted(members, key=lambda m: (across[m], m))
             groupings += [[by_across[:k], by_across[k:]] for k in range(1, len(members))]
         for groups in groupings:
-            for parts, orders in _bands(view, rows, groups, along, least, targets, width, span, cell):
+            for parts, orders in _bands(view, rows, groups, along, least, targets, width, firm, span, cell):
                 band = np.logical_or.reduce(parts)
                 shares: dict[str, float] | None = {}
                 for part, group in zip(parts, groups):
@@ -224,18 +227,7 @@ def _relaid_family(
                     continue
                 variants = [(order, shares) for order in orders]
                 if len(groups) == 1:
-                    # or a row short of the side, the head keeping an end of the band (where it
-                    # meets a core, or a room it must keep a wall with): the rooms at their
-                    # planned areas, or the head's end as long as its width (a square of it
-                    # then reaches into the band)
-                    area = float(band.sum()) * cell * cell
-                    depth = int(band.any(axis=1).sum()) * cell
-                    for end in sorted({area - sum(targets[m] for m in members), head_width * depth}):
-                        short = area_shares(area - end, members, least, targets) if end > EPS else None
-                        if short is not None:
-                            short[head] = end
-                            variants += [(((head, *order[0]),), short) for order in orders]
-                            variants += [(((*order[0], head),), short) for order in orders]
+                    variants += _short_rows(band, head, members, orders, least, targets, head_width, cell)
                 for order, sizes in variants:
                     turned = turned_labels.copy()
                     turned[view & ~band] = keys[head]
@@ -265,6 +257,26 @@ def _relaid_family(
     return best
 
 
+def _short_rows(
+    band: np.ndarray, head: str, members: list[str], orders: list[tuple[tuple[str, ...], ...]],
+    least: dict[str, float], targets: dict[str, float], head_width: float, cell: float,
+) -> list[tuple[tuple[tuple[str, ...], ...], dict[str, float]]]:
+    """A row short of its side, the head keeping an end of the band (where it meets a core, or a
+    room it must keep a wall with): (the order with the head first or last, the shares) with the
+    rooms at their planned areas, and with the head's end as long as its width (a square of it
+    then reaches into the band)."""
+    area = float(band.sum()) * cell * cell
+    depth = int(band.any(axis=1).sum()) * cell
+    out: list[tuple[tuple[tuple[str, ...], ...], dict[str, float]]] = []
+    for end in sorted({area - sum(targets[m] for m in members), head_width * depth}):
+        shares = area_shares(area - end, members, least, targets) if end > EPS else None
+        if shares is not None:
+            shares[head] = end
+            out += [(((head, *order[0]),), shares) for order in orders]
+            out += [(((*order[0], head),), shares) for order in orders]
+    return out
+
+
 def _orders(group: list[str], along: dict[str, float], every: int) -> list[tuple[str, ...]]:
     """The orders of ``group`` along its band tried: every order of up to ``every`` rooms, else
     the order they lie in now and its reverse."""
@@ -276,13 +288,16 @@ def _orders(group: list[str], along: dict[str, float], every: int) -> list[tuple
 
 def _bands(
     view: np.ndarray, rows: np.ndarray, groups: list[list[str]], along: dict[str, float],
-    least: dict[str, float], targets: dict[str, float], width: dict[str, float], span: float, cell: float,
+    least: dict[str, float], targets: dict[str, float], width: dict[str, float], firm: dict[str, float],
+    span: float, cell: float,
 ) -> Iterable[tuple[list[np.ndarray], list[tuple[tuple[str, ...], ...]]]]:
     """(the cells of each group's band, the orders of the rooms in them to try) of each choice
     of depths for ``groups``' rows: the first along the top rows of ``view``, the second (if any)
     along its bottom rows. A band is as deep as its rooms' planned areas or their minimums need
-    over ``span`` (or a row more) or as its widest room's width asks; bands that meet or leave the head no row are
-    skipped."""
+    over ``span`` (or a row more) or as its widest room's width asks; bands that meet or leave
+    the head no row are skipped, and so are bands too shallow or too short for the ``firm``
+    widths of their rooms (those at their width now, which must stay so): the rows they would
+    lay out are refused anyway, and most of the bands tried are such."""
     options = []
     for group in groups:
         need = int(np.ceil(sum(targets[m] for m in group) / span / cell - 1e-6))
@@ -294,8 +309,11 @@ def _bands(
     # two rows of rooms keep the orders few: both sides' orders are tried together
     every = ALL_ORDERS if len(groups) == 1 else 2
     orders = list(itertools.product(*(_orders(g, along, every) for g in groups)))
+    # cells across and along that each group's rooms must have: every room a column at least
+    deepest = [int(np.ceil(max(firm[m] for m in g) / cell - 1e-6)) for g in groups]
+    columns = [sum(max(1, int(np.ceil(firm[m] / cell - 1e-6))) for m in g) for g in groups]
     for depths in itertools.product(*options):
-        if any(d < 1 for d in depths) or sum(depths) >= len(rows):
+        if any(d < max(1, low) for d, low in zip(depths, deepest)) or sum(depths) >= len(rows):
             continue
         top = np.zeros_like(view)
         top[rows[0]:rows[0] + depths[0]] = view[rows[0]:rows[0] + depths[0]]
@@ -304,4 +322,6 @@ def _bands(
             bottom = np.zeros_like(view)
             bottom[rows[-1] + 1 - depths[1]:rows[-1] + 1] = view[rows[-1] + 1 - depths[1]:rows[-1] + 1]
             parts.append(bottom)
+        if any(int(part.any(axis=0).sum()) < need for part, need in zip(parts, columns)):
+            continue
         yield parts, orders
