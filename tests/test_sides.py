@@ -119,3 +119,29 @@ def test_a_room_below_its_minimum_area_takes_what_it_needs_from_the_room_beside_
     tight = layout_of(narrower, SMALL_NAMES)
     assert tight.room("meeting_room_1").area == 10.5
     assert enlarge_rooms(tight, graph, "office") == tight
+
+
+# A classroom K 10 m × 5 m (its width 5.4 m) over a school's corridor C 2.5 m deep, toilets T
+# beside it reaching half a metre lower: pushed a row into the corridor, the classroom would leave
+# the corridor's cell in the corner by the toilets outside every 1 m square (no agent passes it).
+CORNER = "\n".join(["TTTTT" + "K" * 20] * 10 + ["TTTT" + "C" * 21] + ["C" * 25] * 4)
+CORNER_NAMES = {
+    "C": ("corridor", "main", "corridor", 4.0),
+    "T": ("toilets", "Entities", "toilet", 2.5),
+    "K": ("classroom_1", "Entities", "classroom", 40.0),
+}
+
+
+def test_a_push_gives_the_corridor_cell_it_would_strand_to_the_room_it_completes() -> None:
+    layout = layout_of(CORNER, CORNER_NAMES)
+    graph = graph_of(CORNER_NAMES, [("corridor", "toilets"), ("corridor", "classroom_1")])
+    assert narrow_rooms(layout.rooms, "school") == {"classroom_1"}
+    wide = widen_sides(layout, graph, "school")
+    assert narrow_rooms(wide.rooms, "school") == set()
+    # the classroom 10 m × 5.5 m, the corridor 2 m deep along it, the corner cell the toilets'
+    assert wide.room("classroom_1").area == 55.0
+    assert wide.room("toilets").area == layout.room("toilets").area + 0.25
+    corridor = cells_of(wide, "corridor")
+    assert corridor.sum() == 100 and corridor[:4].all()
+    for rid in CORNER_NAMES.values():
+        assert not mask_defects(cells_of(wide, rid[0]), rid[2], "school", CELL)

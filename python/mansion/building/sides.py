@@ -15,6 +15,8 @@ side, so the walls it moves stay straight (a core or the outline stops it). The 
 rooms those cells belonged to (never a core; on floors that carry walls, only rooms of the room's
 own first-round region). Of the pushes that leave fewer of the room's cells outside its width's
 squares, those that leave fewest (then take fewest cells) are judged, :data:`MAX_JUDGED` per axis,
+a neighbour's cell the push leaves outside every 1 m square of the neighbour's going to a room
+beside it whose square it completes (a corridor's cell in the corner by a toilet, to the toilet),
 under the rules of a family re-laid (:func:`mansion.building.recut._judged`): no room of them
 gains a defect of ``mansion eval realism`` it lacked, each stays in one piece at its minimum area
 with no new part one cell wide, and every relation keeps its wall. The room need not come out at
@@ -36,7 +38,7 @@ import numpy as np
 
 from mansion.building.load_bearing import first_round_groups
 from mansion.building.merge import mask_defects, square_cover
-from mansion.building.recut import _judged, _kept_walls, _least, _passable, _wide_rectangle
+from mansion.building.recut import _judged, _kept_walls, _least, _passable, _squares, _wide_rectangle
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
@@ -127,6 +129,34 @@ def _pushes(mask: np.ndarray, givers: np.ndarray, dy: int, dx: int, reach: int) 
     return out
 
 
+def _take_nubs(new: np.ndarray, labels: np.ndarray, key: int, donors: list[int], may_take: np.ndarray) -> set[int]:
+    """Give each cell of ``donors`` that the push left outside every 1 m square of theirs (in
+    ``new``, in place) to a room beside it whose 1 m square it then completes, the pushed room
+    (``key``) first, only rooms ``may_take`` allows by label (no core; on floors that carry walls
+    none of another first-round region): a corridor's cell left in the corner between a toilet
+    and the wall the push moved, which no agent passes, goes to the toilet. The rooms given
+    cells, besides ``key``."""
+    given: set[int] = set()
+    h, w = new.shape
+    for donor in donors:
+        _, covered = _squares(new == donor)
+        _, covered_before = _squares(labels == donor)
+        for r, c in zip(*np.nonzero((new == donor) & ~covered & covered_before)):
+            around = {int(new[y, x]) for y, x in ((r - 1, c), (r + 1, c), (r, c - 1), (r, c + 1)) if 0 <= y < h and 0 <= x < w}
+            for taker in sorted(around - {donor, -1}, key=lambda k: (k != key, k)):
+                # the taker's three cells of a 2 × 2 block round this one
+                if may_take[taker] and any(
+                    0 <= r + dy < h and 0 <= c + dx < w
+                    and new[r + dy, c + dx] == new[r + dy, c] == new[r, c + dx] == taker
+                    for dy in (-1, 1) for dx in (-1, 1)
+                ):
+                    new[r, c] = taker
+                    if taker != key:
+                        given.add(taker)
+                    break
+    return given
+
+
 #: Pushes judged in full per axis, at most (the fewest cells left outside the width's squares
 #: first, then the fewest taken).
 MAX_JUDGED = 3
@@ -164,6 +194,9 @@ def _pushed(
     inside = labels >= 0
     givers = np.zeros_like(mask)
     givers[inside] = may_give[labels[inside]]
+    # the rooms a neighbour's stranded cell may go to: the room, or one that may give
+    may_take = may_give.copy()
+    may_take[key] = True
     width = needed_width(rooms[room].room_type, building_type)
     reach = int(np.ceil(width / cell - 1e-6))
     was = _uncovered(mask, width, cell)
@@ -194,7 +227,8 @@ def _pushed(
             donors = sorted({ids[k] for k in np.unique(labels[taken])})
             if any(not (new == ids.index(d)).any() for d in donors):
                 continue  # a room would be taken whole
-            cluster = [room, *donors]
+            takers = _take_nubs(new, labels, key, [ids.index(d) for d in donors], may_take)
+            cluster = [room, *donors, *sorted(ids[t] for t in takers if ids[t] not in donors)]
             for rid in cluster:
                 if rid not in before:
                     own = labels == ids.index(rid)
