@@ -145,3 +145,22 @@ def test_a_push_gives_the_corridor_cell_it_would_strand_to_the_room_it_completes
     assert corridor.sum() == 100 and corridor[:4].all()
     for rid in CORNER_NAMES.values():
         assert not mask_defects(cells_of(wide, rid[0]), rid[2], "school", CELL)
+
+
+def test_pushes_that_leave_a_neighbour_below_its_area_do_not_count_among_those_judged(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    # a play hall 3 m wide between a sleep room that can give half a metre (60 m², its minimum
+    # 54 m²) and group rooms that can give a metre (33 m², their minimum 25 m², 4.5 m wide at
+    # least): the pushes ranked first take 1.5 m from one side and leave it too small; judged
+    # one at a time, the push that splits the 1.5 m between the two sides is still reached
+    import mansion.building.sides as sides
+
+    monkeypatch.setattr(sides, "MAX_JUDGED", 1)
+    names = {
+        **NAMES, "W": ("sleep_room", "Entities", "sleep_room", 54.0),
+        "G": ("group_room_1", "Entities", "group_room", 25.0), "H": ("group_room_2", "Entities", "group_room", 25.0),
+    }
+    layout, graph = layout_of(picture(10, 6, 11), names), graph_of(names, EDGES)
+    wide = widen_sides(layout, graph, "kindergarten")
+    assert narrow_rooms(wide.rooms, "kindergarten") == set()
+    assert wide.room("play_hall").area == 54.0 and wide.room("sleep_room").area == 54.0
+    assert wide.room("group_room_1").area == wide.room("group_room_2").area == 27.0

@@ -14,8 +14,9 @@ of a neighbour within that reach of the room in that direction goes to the room,
 side, so the walls it moves stay straight (a core or the outline stops it). The donors are the
 rooms those cells belonged to (never a core; on floors that carry walls, only rooms of the room's
 own first-round region). Of the pushes that leave fewer of the room's cells outside its width's
-squares, those that leave fewest (then take fewest cells) are judged, :data:`MAX_JUDGED` per axis,
-a neighbour's cell the push leaves outside every 1 m square of the neighbour's going to a room
+squares, those that leave fewest (then take fewest cells) are judged, :data:`MAX_JUDGED` per axis
+(one that leaves a neighbour below its minimum area, as most do on a tight floor, is passed over
+without counting), a neighbour's cell the push leaves outside every 1 m square of the neighbour's going to a room
 beside it whose square it completes (a corridor's cell in the corner by a toilet, to the toilet),
 under the rules of a family re-laid (:func:`mansion.building.recut._judged`): no room of them
 gains a defect of ``mansion eval realism`` it lacked, each stays in one piece at its minimum area
@@ -221,12 +222,19 @@ def _pushed(
                 if left < was:
                     tried.append((left, int(taken.sum()), taken))
         tried.sort(key=lambda t: t[:2])
-        for left, _, taken in tried[:MAX_JUDGED]:
+        judged = 0
+        for left, _, taken in tried:
+            if judged == MAX_JUDGED:
+                break
             new = labels.copy()
             new[taken] = key
             donors = sorted({ids[k] for k in np.unique(labels[taken])})
-            if any(not (new == ids.index(d)).any() for d in donors):
-                continue  # a room would be taken whole
+            # a push that leaves a neighbour below its minimum area (most are) is refused before
+            # it counts among the judged: a shallower one may leave it enough
+            left_of = {d: float((new == ids.index(d)).sum()) for d in donors}
+            if any(not n or n * cell * cell + EPS < _least(nodes[d]) for d, n in left_of.items()):
+                continue  # (or a room would be taken whole)
+            judged += 1
             takers = _take_nubs(new, labels, key, [ids.index(d) for d in donors], may_take)
             cluster = [room, *donors, *sorted(ids[t] for t in takers if ids[t] not in donors)]
             for rid in cluster:
