@@ -164,3 +164,24 @@ def test_pushes_that_leave_a_neighbour_below_its_area_do_not_count_among_those_j
     assert narrow_rooms(wide.rooms, "kindergarten") == set()
     assert wide.room("play_hall").area == 54.0 and wide.room("sleep_room").area == 54.0
     assert wide.room("group_room_1").area == wide.room("group_room_2").area == 27.0
+
+
+def test_a_room_at_its_width_slides_over_into_the_room_beyond_it(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    # a play hall 3.5 m wide beside a group room exactly at its 4.5 m, a sleep room 5 m deep
+    # beyond: the group room cannot give a metre, but it can move a metre over into the sleep room
+    names = {**NAMES, "W": ("sleep_room", "Entities", "sleep_room", 18.0)}
+    layout = layout_of("\n".join(["PPPPPPPGGGGGGGGGWWWWWWWWWW"] * 24), names)
+    graph = graph_of(names, [("play_hall", "group_room_1"), ("group_room_1", "sleep_room")])
+    assert narrow_rooms(layout.rooms, "kindergarten") == {"play_hall"}
+    wide = widen_sides(layout, graph, "kindergarten")
+    assert narrow_rooms(wide.rooms, "kindergarten") == set()
+    assert wide.room("play_hall").area == 54.0
+    assert wide.room("group_room_1").area == layout.room("group_room_1").area
+    assert wide.room("sleep_room").area == 48.0
+    for a, b in (("play_hall", "group_room_1"), ("group_room_1", "sleep_room")):
+        assert wide.adjacency(a, b).longest >= 1.0  # type: ignore[union-attr]
+    # without the slide, no push passes: the group room would be left 3.5 m wide
+    import mansion.building.sides as sides
+
+    monkeypatch.setattr(sides, "SLIDES", False)
+    assert widen_sides(layout, graph, "kindergarten") == layout

@@ -11,8 +11,10 @@ architect moves the wall the whole metre.
 :func:`widen_sides` takes each room below its width (but cores) and, along each axis, pushes it
 out on one side, or on both opposite sides about evenly, by up to its width in cells: every cell
 of a neighbour within that reach of the room in that direction goes to the room, across the whole
-side, so the walls it moves stay straight (a core or the outline stops it). The donors are the
-rooms those cells belonged to (never a core; on floors that carry walls, only rooms of the room's
+side, so the walls it moves stay straight (a core or the outline stops it); a push on one side is
+also tried with the rooms it takes from sliding over as far into the rooms beyond them
+(:data:`SLIDES`: a group room at its width beside the hall moves a metre into the sleep room
+beyond it rather than giving the metre). The donors are the rooms those cells belonged to (never a core; on floors that carry walls, only rooms of the room's
 own first-round region). Of the pushes that leave fewer of the room's cells outside its width's
 squares, those that leave fewest (then take fewest cells) are judged, :data:`MAX_JUDGED` per axis
 (one that leaves a neighbour below its minimum area, as most do on a tight floor, is passed over
@@ -158,6 +160,10 @@ def _take_nubs(new: np.ndarray, labels: np.ndarray, key: int, donors: list[int],
     return given
 
 
+#: Whether a one-sided push is also tried with the rooms it takes from sliding over as far into
+#: the rooms beyond them (a room pushed into a row of rooms at their width moves the whole row).
+SLIDES = True
+
 #: Pushes judged in full per axis, at most (the fewest cells left outside the width's squares
 #: first, then the fewest taken).
 MAX_JUDGED = 3
@@ -207,7 +213,9 @@ def _pushed(
     for axis in (((1, 0), (-1, 0)), ((0, 1), (0, -1))):
         ahead, back = (_pushes(mask, givers, dy, dx, reach) for dy, dx in axis)
         none = np.zeros_like(mask)
-        tried: list[tuple[int, int, np.ndarray]] = []
+        # (cells left outside the squares, cells taken, slid, the cells, the one side's
+        # direction and depth when one side only)
+        tried: list[tuple[int, int, bool, np.ndarray, tuple[int, int] | None, int]] = []
         for a in range(len(ahead) + 1):
             for b in range(len(back) + 1):
                 # one side, or both about evenly
@@ -216,27 +224,44 @@ def _pushed(
                 taken = (ahead[a - 1] if a else none) | (back[b - 1] if b else none)
                 if area is not None:
                     if float((mask | taken).sum()) * cell * cell + EPS >= area:
-                        tried.append((0, int(taken.sum()), taken))
-                    continue
-                left = _uncovered(mask | taken, width, cell)
-                if left < was:
-                    tried.append((left, int(taken.sum()), taken))
-        tried.sort(key=lambda t: t[:2])
+                        left = 0
+                    else:
+                        continue
+                else:
+                    left = _uncovered(mask | taken, width, cell)
+                    if left >= was:
+                        continue
+                side = axis[0] if not b else axis[1] if not a else None
+                tried.append((left, int(taken.sum()), False, taken, side, a or b))
+                if side is not None and SLIDES:
+                    # or the rooms it takes from slide over as far into the rooms beyond them
+                    tried.append((left, int(taken.sum()), True, taken, side, a or b))
+        tried.sort(key=lambda t: t[:3])
         judged = 0
-        for left, _, taken in tried:
+        for left, _, slid, taken, side, depth in tried:
             if judged == MAX_JUDGED:
                 break
             new = labels.copy()
             new[taken] = key
-            donors = sorted({ids[k] for k in np.unique(labels[taken])})
-            # a push that leaves a neighbour below its minimum area (most are) is refused before
-            # it counts among the judged: a shallower one may leave it enough
-            left_of = {d: float((new == ids.index(d)).sum()) for d in donors}
-            if any(not n or n * cell * cell + EPS < _least(nodes[d]) for d, n in left_of.items()):
+            donors = {int(k) for k in np.unique(labels[taken])}
+            if slid and side is not None:
+                for d in sorted(donors):
+                    own = labels == d
+                    gains = _pushes(own, givers & ~mask & ~own & ~taken, side[0], side[1], depth)
+                    if gains:
+                        new[gains[-1]] = d
+            # every room the push changed, and a push that leaves one of them below its minimum
+            # area (most are) refused before it counts among the judged: a shallower one may
+            # leave it enough
+            changed = sorted({int(k) for k in np.unique(labels[new != labels])} - {key})
+            if any(
+                not (new == d).any() or float((new == d).sum()) * cell * cell + EPS < _least(nodes[ids[d]])
+                for d in changed
+            ):
                 continue  # (or a room would be taken whole)
             judged += 1
-            takers = _take_nubs(new, labels, key, [ids.index(d) for d in donors], may_take)
-            cluster = [room, *donors, *sorted(ids[t] for t in takers if ids[t] not in donors)]
+            takers = _take_nubs(new, labels, key, changed, may_take)
+            cluster = [room, *sorted({ids[d] for d in changed} | {ids[t] for t in takers})]
             for rid in cluster:
                 if rid not in before:
                     own = labels == ids.index(rid)
