@@ -1036,6 +1036,27 @@ def test_a_room_the_subject_has_between_two_others() -> None:
     }
 
 
+def test_the_rooms_a_room_has_around_it_stay_in_its_description() -> None:
+    # "It has R in the west": R lies to that side of the subject; the next "It" is still the
+    # subject, so the size is the bathroom's, not the living room's
+    text = (
+        "The bathroom is in the northeast corner of the house. It has the living room in both west and south. "
+        "Its dimensions are 10 feet in length and 7 feet in width."
+    )
+    assert facts(text) == {
+        ("bathroom_3", "position", "northeast", ()),
+        ("living_room_0", "relation", "west_of", ("bathroom_3",)),
+        ("living_room_0", "relation", "south_of", ("bathroom_3",)),
+    }
+    assert [s[0] for s in sizes(text)] == ["bathroom_3"]
+    # a listed room "in" a side is in that part of the plan too, as after "with"
+    assert facts("The kitchen is in the west. It has the balcony in north and living room in east.") == {
+        ("kitchen_2", "position", "west", ()),
+        ("balcony_5", "relation", "north_of", ("kitchen_2",)), ("balcony_5", "position", "north", ()),
+        ("living_room_0", "relation", "east_of", ("kitchen_2",)), ("living_room_0", "position", "east", ()),
+    }
+
+
 def test_above_it_and_below_it() -> None:
     assert facts("The bathroom is in the east. Below it is the living room.") == {
         ("bathroom_3", "position", "east", ()), ("living_room_0", "relation", "south_of", ("bathroom_3",)),

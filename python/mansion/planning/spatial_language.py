@@ -501,7 +501,7 @@ _LINKS = frozenset(
     "adjacent adjoining next nearby connects connected accessed accessible entrance bordered "
     "neighbored neighboured followed after before above below under over upside downside , "
     "touches touching touch borders bordering surrounded surrounding joining joins "
-    "both all also then while where which that".split()
+    "both all also then while where which that has have had contains containing includes including".split()
 )
 
 
@@ -714,7 +714,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     # "R1 on its D:right", "to the D:north is R1", "D:north is R1", "R1 D:below" (run-on style).
     pat_after = (
         r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|both))*"
-        r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r")?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
+        r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r"(?:\s+both)?)?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
         r"(?:\s+(?:side|end|edge|wall|corner|direction)(?!\s+of\b))?"
     )
     for m in re.finditer(pat_after, text):
