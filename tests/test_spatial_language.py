@@ -1057,6 +1057,30 @@ def test_the_rooms_a_room_has_around_it_stay_in_its_description() -> None:
     }
 
 
+def test_descriptions_that_never_name_their_room_take_the_rooms_left_in_alphabetical_order() -> None:
+    three = [KnownRoom("kitchen_0", "kitchen"), KnownRoom("bathroom_1", "bathroom"), KnownRoom("balcony_2", "balcony")]
+    text = "Located in the middle of the north side. Size is 10 x 4 sq ft. The bathroom is located in the west. The kitchen is in the northeast corner."
+    assert facts(text, three) == {
+        ("balcony_2", "position", "north", ()), ("bathroom_1", "position", "west", ()), ("kitchen_0", "position", "northeast", ()),
+    }
+    # "it was placed" opens the next unnamed room's description, also after a named one
+    commons = [KnownRoom("kitchen_0", "kitchen"), KnownRoom("bathroom_1", "bathroom"), KnownRoom("common_room_2", "common_room"),
+               KnownRoom("master_room_3", "master_room")]
+    text = ("It was placed on the west side of the plan. It is about 5 feet long. It was placed in the south east corner. "
+            "The kitchen is in the north. It was placed in the north west corner.")
+    assert facts(text, commons) == {
+        ("bathroom_1", "position", "west", ()), ("common_room_2", "position", "southeast", ()),
+        ("kitchen_0", "position", "north", ()), ("master_room_3", "position", "northwest", ()),
+    }
+    # the rooms the text names out of that order: no order to follow, nothing is guessed
+    text = "Located in the middle of the north side. The kitchen is located in the west. The bathroom is in the south."
+    assert facts(text, three) == {("kitchen_0", "position", "west", ()), ("bathroom_1", "position", "south", ())}
+    # a text that names its first room reads "It is located" as that room's
+    assert facts("The kitchen is in the north. It is located in the east corner.", three) == {
+        ("kitchen_0", "position", "north", ()), ("kitchen_0", "position", "east", ()),
+    }
+
+
 def test_above_it_and_below_it() -> None:
     assert facts("The bathroom is in the east. Below it is the living room.") == {
         ("bathroom_3", "position", "east", ()), ("living_room_0", "relation", "south_of", ("bathroom_3",)),

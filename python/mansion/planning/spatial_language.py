@@ -480,6 +480,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         if listed and opening is not None:
             subject = opening
 
+    _unnamed_descriptions(clauses, mentions, rooms)
     statements: list[Statement] = []
     unread: list[str] = []
     for clause in clauses:
@@ -492,6 +493,66 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         elif not _is_filler(clause.text):
             unread.append(_plain(clause.text, mentions))
     return _resolve(statements, unread, mentions, rooms)
+
+
+#: A description that opens by placing a room it does not name: "Located in the middle of the
+#: D:north side.", "It was placed on the D:northwest side of the plan."
+#: ("placed in between the R1 and R2" alone goes on with the description before it)
+_UNNAMED_OPENER = re.compile(r"^\s*(?:(?:it\s+(?:is|was)\s+|it'?s\s+)(?:located|locate|placed|situated|positioned)|located|situated|positioned)\b")
+
+
+def _unnamed_descriptions(clauses: list[_Clause], mentions: list[RoomMention], rooms: Sequence[KnownRoom]) -> None:
+    """Give the descriptions that never name their room the rooms the text leaves undescribed.
+
+    Some descriptions go through the rooms one after another in alphabetical order of their
+    names and leave some of them unnamed ("Located in the middle of the north side. Size is 10 x
+    4 sq ft. Located in the south east corner. ... The bathroom is located in ..."). When the text
+    opens so, each clause that opens by placing an unnamed room ("located ...", "it was placed
+    ...") starts such a description, and there are exactly as many of them as rooms no clause is
+    about, the unnamed descriptions take those rooms in alphabetical order, provided the named and
+    the unnamed descriptions together then follow that order. Otherwise nothing changes (the
+    clauses stay unread, or about the room named before them).
+    """
+    if not clauses or clauses[0].subject is not None or not _UNNAMED_OPENER.match(clauses[0].text):
+        return
+    by_type: dict[str, list[str]] = {}
+    for r in rooms:
+        by_type.setdefault(r.room_type, []).append(r.id)
+    # the text's descriptions in order: a named room's key, or None and an unnamed one's clauses
+    order: list[tuple[tuple[str, int | None] | None, list[int]]] = []
+    prev: int | None = None
+    for i, c in enumerate(clauses):
+        opens = _UNNAMED_OPENER.match(c.text) is not None
+        if c.subject is not None and c.subject != prev:
+            order.append((_canonical(mentions[c.subject], by_type), []))
+        elif opens and (c.subject is None or c.subject == prev):
+            order.append((None, [i]))
+        elif order and order[-1][0] is None:
+            order[-1][1].append(i)
+        prev = c.subject
+    described = {key for key, _ in order if key is not None}
+    slots: list[tuple[str, int | None]] = []
+    for kind, ids in by_type.items():
+        said = {n for k, n in described if k == kind}
+        if len(ids) == 1:
+            slots += [] if said else [(kind, None)]
+        elif None in said:
+            return  # "the balcony" said of one of two: which one is left is not known
+        else:
+            slots += [(kind, n) for n in range(1, len(ids) + 1) if n not in said][: len(ids) - len(said)]
+    if len(slots) != sum(key is None for key, _ in order):
+        return
+    slots.sort(key=lambda k: (k[0], k[1] or 0))
+    it = iter(slots)
+    keys = [key if key is not None else next(it) for key, _ in order]
+    firsts = list(dict.fromkeys(keys))
+    if any((a[0], a[1] or 0) > (b[0], b[1] or 0) for a, b in zip(firsts, firsts[1:])):
+        return
+    for (key, unnamed), (kind, n) in zip(order, keys):
+        if key is None:
+            mentions.append(RoomMention(kind, n, kind.replace("_", " ")))
+            for i in unnamed:
+                clauses[i].subject = len(mentions) - 1
 
 
 #: Words after which a room name continues the clause rather than opening a new description.
