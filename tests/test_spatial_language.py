@@ -1081,6 +1081,21 @@ def test_descriptions_that_never_name_their_room_take_the_rooms_left_in_alphabet
     }
 
 
+def test_a_label_after_a_comma_a_line_from_end_to_end_and_the_very_wall() -> None:
+    # "..., Master room location: ..." opens the master room's description, as a label does
+    text = "Living room location: central region, sides 30 by 20 feet, Master room location: south west corner, next to living."
+    assert ("master_room_1", "position", "southwest", ()) in facts(text)
+    assert all(f[0] != "living_room_0" or f[2] != "southwest" for f in facts(text))
+    # "at east to west direction": the room runs along that line, it is at neither end
+    assert facts("The living room at east to west direction upside of the kitchen.") == {
+        ("living_room_0", "relation", "north_of", ("kitchen_2",)),
+    }
+    # "on the very south wall": at that wall of the plan
+    assert facts("The bathroom is in the west. It is on the very south wall.") == {
+        ("bathroom_3", "position", "west", ()), ("bathroom_3", "position", "south", ()),
+    }
+
+
 def test_above_it_and_below_it() -> None:
     assert facts("The bathroom is in the east. Below it is the living room.") == {
         ("bathroom_3", "position", "east", ()), ("living_room_0", "relation", "south_of", ("bathroom_3",)),

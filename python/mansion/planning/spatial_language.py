@@ -594,7 +594,7 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
 #: ...", "R3 measures ...", "R3: D:north side ..." (a room named as a label).
 _OPENS = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:it'?s\s+|it\s+is\s+)?(?:is|was|at|in|on|located|locate|location|lies|sits|measures|measuring|D:)|\s*:(?!\s*\d))")
 #: Openers no list of rooms goes on with: "..., R6 measures about", "R6: D:north side".
-_OPENS_STRONGLY = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:measures|measuring)\b|\s*:(?!\s*\d))")
+_OPENS_STRONGLY = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:measures|measuring)\b|\s*:(?!\s*\d)|\s+location\s*:)")
 #: Openers that place the room: after another room's name they still start a new description
 #: ("... near the R5 the R1 is D:west side ...", "between R2 and R3 R4 is located ...").
 _OPENS_PLACING = re.compile(
@@ -865,6 +865,8 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     for pattern in (
         r"(?:\b(?:from|running|runs|run|runing|oriented|extends?|extending|stretch(?:es|ing)?|goes|going|spans?|spanning)\s+(?:\w+\s+){0,2}?)"
         r"D:\w+\s*(?:to|-|/|through|towards?)\s*(?:the\s+)?D:\w+",
+        # "at D:east to D:west direction": along that line, not at either end
+        r"\b(?:D:east\s+to\s+(?:the\s+)?D:west|D:west\s+to\s+(?:the\s+)?D:east|D:north\s+to\s+(?:the\s+)?D:south|D:south\s+to\s+(?:the\s+)?D:north)\s+direction\b",
         r"\b(?:its|it's|their|his|her)\s+(?:own\s+)?" + _DD + r"\s+" + _OWN_PART,
         r"\b(?:(?:small|little|tiny|narrow)\s+(?:portions?|parts?|spaces?|areas?|sections?)|extensions?|alcoves?|nooks?"
         r"|knock\s*outs?|notch(?:es)?|cut\s*outs?)\b"
@@ -892,7 +894,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             and not re.match(r"\s+wall\s+of\s+(?:the\s+)?" + _PLACE, after)
             and not (
                 re.match(r"\s+walls?\b", after)
-                and re.search(r"\b(?:at|on|along|against|by)\s+(?:the\s+)?$", before)
+                and re.search(r"\b(?:at|on|along|against|by)\s+(?:the\s+)?(?:very\s+|far\s+)?$", before)
                 and not re.search(r"\b(?:door|doorway|entry|entrance|window|opening)\b", rest_text[: m.start()])
             )
         ):
