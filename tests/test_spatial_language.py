@@ -1096,6 +1096,17 @@ def test_a_label_after_a_comma_a_line_from_end_to_end_and_the_very_wall() -> Non
     }
 
 
+def test_a_room_at_a_wall_of_another_room_is_beyond_that_wall() -> None:
+    assert facts("The common room is 14x10 in size and attached to the west wall of the living room.") == {
+        ("common_room_4", "relation", "west_of", ("living_room_0",)),
+    }
+    assert facts("The balcony is located along the north wall of the master bedroom.") == {
+        ("balcony_5", "relation", "north_of", ("master_room_1",)),
+    }
+    # a wall of the plan is still where the room is
+    assert facts("The kitchen is at the north wall of the house.") == {("kitchen_2", "position", "north", ())}
+
+
 def test_above_it_and_below_it() -> None:
     assert facts("The bathroom is in the east. Below it is the living room.") == {
         ("bathroom_3", "position", "east", ()), ("living_room_0", "relation", "south_of", ("bathroom_3",)),

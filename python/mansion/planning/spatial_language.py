@@ -744,7 +744,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     # 2. The subject relative to another room: "D:west of R1", "to the D:north of R1",
     # "on D:east side of R1", "D:upside of R1", "above R1", "R1's D:north side".
     pat = (
-        r"(?:\b(?:to|on|at|in|towards|toward)" + _ART + r"\s+)?(?:" + _DD + r")(?:\s+" + _PART + r")?\s+(?:of|from)"
+        r"(?:\b(?:to|on|at|in|towards|toward)" + _ART + r"\s+)?(?:" + _DD + r")(?:\s+(?:" + _PART + r"|wall))?\s+(?:of|from)"
         + _ART + r"\s+(" + _ROOMS + r")"
     )
     for m in re.finditer(pat, text):
