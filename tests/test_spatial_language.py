@@ -1081,6 +1081,24 @@ def test_descriptions_that_never_name_their_room_take_the_rooms_left_in_alphabet
     }
 
 
+def test_a_location_label_without_its_room_is_the_room_the_labelled_list_leaves_out() -> None:
+    rooms = [KnownRoom("living_room_0", "living_room"), KnownRoom("bathroom_1", "bathroom"), KnownRoom("bathroom_2", "bathroom"),
+             KnownRoom("kitchen_3", "kitchen")]
+    text = ("Bathroom 1 location: West side, Relationship: next to living. Location: East side, Relationship: between "
+            "living and kitchen. Kitchen location: North side. Living room location: central region.")
+    assert facts(text, rooms) == {
+        ("bathroom_1", "position", "west", ()), ("bathroom_1", "relation", "next_to", ("living_room_0",)),
+        ("bathroom_2", "position", "east", ()), ("bathroom_2", "relation", "between", ("living_room_0", "kitchen_3")),
+        ("kitchen_3", "position", "north", ()), ("living_room_0", "position", "centre", ()),
+    }
+    # written without full stops: the label after a size still opens the next description
+    text = ("Bathroom 1 location: West side, Sides: 7 feet width and 5 feet length Localization: east side, Area: 35 sq ft "
+            "Kitchen location: North side Living room location: central region")
+    assert ("bathroom_2", "position", "east", ()) in facts(text, rooms)
+    # a heading before a named room is still no part of the sentence
+    assert facts("Location: The kitchen is in the north.", rooms) == {("kitchen_3", "position", "north", ())}
+
+
 def test_a_label_after_a_comma_a_line_from_end_to_end_and_the_very_wall() -> None:
     # "..., Master room location: ..." opens the master room's description, as a label does
     text = "Living room location: central region, sides 30 by 20 feet, Master room location: south west corner, next to living."

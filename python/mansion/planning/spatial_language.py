@@ -163,6 +163,10 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\bdog\s*leg\b", " "),
     # "South est corner": "est" is no word of its own after a compass word
     (r"\b(north|south)\s*-?\s*est\b", r"\1 east"),
+    # "Location: East side, Relationship: ...": a label whose room's name was left out (it opens
+    # the description of a room the text does not name, :func:`_unnamed_descriptions`)
+    # (also after a size the description ends on, "... 5 feet length Localization: east side")
+    (r"(^|[.;!?\n]\s*|\b(?:length|width|feet|ft)\s+)(?:location|localization)\s*:\s*(?=(?:north|south|east|west|centr|center|middle)\w*\b)", r"\1. location at "),
     # "Location: Common room 1 is on ...", "Size: It is ...": a heading before a sentence is no
     # part of it (left there, it hides the room that opens the sentence)
     (r"(^|[.;!?\n]\s*)(?:location|position|placement|relationships?|relations?|size|dimensions?|measurements?|area|sides|adjacency|orientation)\s*:", r"\1 "),
@@ -501,19 +505,29 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
 _UNNAMED_OPENER = re.compile(r"^\s*(?:(?:it\s+(?:is|was)\s+|it'?s\s+)(?:located|locate|placed|situated|positioned)|located|situated|positioned)\b")
 
 
+#: A label with no room before it: "Location: east side, Relationship: between living and
+#: master" (the room's name left out of a list of labelled descriptions)
+_UNNAMED_LABEL = re.compile(r"^\s*location\s+at\b")
+
+
 def _unnamed_descriptions(clauses: list[_Clause], mentions: list[RoomMention], rooms: Sequence[KnownRoom]) -> None:
     """Give the descriptions that never name their room the rooms the text leaves undescribed.
 
     Some descriptions go through the rooms one after another in alphabetical order of their
     names and leave some of them unnamed ("Located in the middle of the north side. Size is 10 x
-    4 sq ft. Located in the south east corner. ... The bathroom is located in ..."). When the text
-    opens so, each clause that opens by placing an unnamed room ("located ...", "it was placed
-    ...") starts such a description, and there are exactly as many of them as rooms no clause is
-    about, the unnamed descriptions take those rooms in alphabetical order, provided the named and
-    the unnamed descriptions together then follow that order. Otherwise nothing changes (the
-    clauses stay unread, or about the room named before them).
+    4 sq ft. Located in the south east corner. ... The bathroom is located in ..."), or leave the
+    room's name out of a list of labels ("Bathroom 1 location: west side. Location: east side.
+    Kitchen location: ..."). When the text opens so, each clause that opens by placing an unnamed
+    room ("located ...", "it was placed ...") starts such a description; a label with no room
+    starts one anywhere. When there are exactly as many of them as rooms no clause is about, the
+    unnamed descriptions take those rooms in alphabetical order, provided the named and the
+    unnamed descriptions together then follow that order. Otherwise nothing changes (the clauses
+    stay unread, or about the room named before them).
     """
-    if not clauses or clauses[0].subject is not None or not _UNNAMED_OPENER.match(clauses[0].text):
+    if not clauses:
+        return
+    opens_text = clauses[0].subject is None and bool(_UNNAMED_OPENER.match(clauses[0].text) or _UNNAMED_LABEL.match(clauses[0].text))
+    if not opens_text and not any(_UNNAMED_LABEL.match(c.text) for c in clauses):
         return
     by_type: dict[str, list[str]] = {}
     for r in rooms:
@@ -522,7 +536,7 @@ def _unnamed_descriptions(clauses: list[_Clause], mentions: list[RoomMention], r
     order: list[tuple[tuple[str, int | None] | None, list[int]]] = []
     prev: int | None = None
     for i, c in enumerate(clauses):
-        opens = _UNNAMED_OPENER.match(c.text) is not None
+        opens = bool(_UNNAMED_LABEL.match(c.text) or (opens_text and _UNNAMED_OPENER.match(c.text)))
         if c.subject is not None and c.subject != prev:
             order.append((_canonical(mentions[c.subject], by_type), []))
         elif opens and (c.subject is None or c.subject == prev):
