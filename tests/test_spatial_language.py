@@ -1099,6 +1099,15 @@ def test_a_location_label_without_its_room_is_the_room_the_labelled_list_leaves_
     assert facts("Location: The kitchen is in the north.", rooms) == {("kitchen_3", "position", "north", ())}
 
 
+def test_a_sentence_about_the_house_having_a_room_is_about_that_room() -> None:
+    text = "The kitchen is in the northeast. This house has a north-facing living room. It is approximately 20 x 20 feet in size."
+    assert facts(text) == {("kitchen_2", "position", "northeast", ()), ("living_room_0", "position", "north", ())}
+    assert [s[0] for s in sizes(text)] == ["living_room_0"]
+    assert facts("The kitchen is in the north. The house has a balcony on the south side.") == {
+        ("kitchen_2", "position", "north", ()), ("balcony_5", "position", "south", ()),
+    }
+
+
 def test_a_label_after_a_comma_a_line_from_end_to_end_and_the_very_wall() -> None:
     # "..., Master room location: ..." opens the master room's description, as a label does
     text = "Living room location: central region, sides 30 by 20 feet, Master room location: south west corner, next to living."

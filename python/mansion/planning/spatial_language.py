@@ -336,7 +336,9 @@ def _type_of(lex: _Lexicon, word: str) -> str:
 
 _SUBJECT_LEAD = re.compile(
     # "The D:south facing R0 offers ...": a compass word in front of the room is about it
-    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|D:\w+|facing|"
+    # ("This house has a D:north-facing R0": a sentence about the house's room is about the room)
+    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|D:\w+|-?facing|"
+    r"(?:house|home|apartment|flat|unit)\s+(?:has|features|includes|contains|offers)|"
     r"\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
 )
 _PRONOUN = re.compile(r"^\s*(?:it|its|it's|this|the\s+room|this\s+room|the\s+size|size|which|they|their)\b")
