@@ -1108,6 +1108,20 @@ def test_a_sentence_about_the_house_having_a_room_is_about_that_room() -> None:
     }
 
 
+def test_numbered_rooms_without_a_type_are_the_bedrooms_and_comm_is_common() -> None:
+    # "room 1", "room 2": the numbered bedrooms, which the master room leaves to the common rooms
+    text = "The direction of room 1 is northwest beside room 2. The direction of room 2 is in the north. The master room is in the southwest."
+    assert facts(text, TWO_COMMONS) == {
+        ("common_room_4", "position", "northwest", ()), ("common_room_4", "relation", "next_to", ("common_room_6",)),
+        ("common_room_6", "position", "north", ()), ("master_room_1", "position", "southwest", ()),
+    }
+    # a type's own room words keep their number ("master room 1" is no bedroom 1)
+    assert facts("The living room is in the south. Bathroom 1 is in the west. Bathroom 2 is in the east.", TWO_COMMONS) == {
+        ("living_room_0", "position", "south", ()), ("bathroom_3", "position", "west", ()), ("bathroom_7", "position", "east", ()),
+    }
+    assert facts("Comm Room is to the north of the kitchen.") == {("common_room_4", "relation", "north_of", ("kitchen_2",))}
+
+
 def test_a_label_after_a_comma_a_line_from_end_to_end_and_the_very_wall() -> None:
     # "..., Master room location: ..." opens the master room's description, as a label does
     text = "Living room location: central region, sides 30 by 20 feet, Master room location: south west corner, next to living."
