@@ -1291,3 +1291,12 @@ def test_every_seed_set_is_solved_under_two_random_seeds_of_the_solver(monkeypat
     # out again once more, under the random seed that laid it out
     read = [s for s in first if "room" not in s]
     assert len(read) >= 2 and read == [s for s in second if "room" not in s]
+
+
+def test_rooms_the_text_does_not_place_are_seeded_amid_their_neighbours_in_half_the_point_solves() -> None:
+    from mansion.eval.text_placement import VARIANTS
+
+    # with corners held firmly, amid the rooms they are adjacent to; otherwise where the descent
+    # left them, so that the layouts the choice weighs differ where the text says nothing
+    assert all(v["unplaced_to_neighbours"] == (v["corner"] == 16.0) for v in VARIANTS)
+    assert sum(v["unplaced_to_neighbours"] for v in VARIANTS) == len(VARIANTS) // 2
