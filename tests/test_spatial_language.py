@@ -1120,6 +1120,8 @@ def test_numbered_rooms_without_a_type_are_the_bedrooms_and_comm_is_common() -> 
         ("living_room_0", "position", "south", ()), ("bathroom_3", "position", "west", ()), ("bathroom_7", "position", "east", ()),
     }
     assert facts("Comm Room is to the north of the kitchen.") == {("common_room_4", "relation", "north_of", ("kitchen_2",))}
+    # "the room 10 x 12 feet" is a size of the room described, not a room of its own
+    assert sizes("The kitchen is in the east. The size of the room 10 x 12 feet.") == [("kitchen_2", 3.05, 3.66, None, False)]
 
 
 def test_a_label_after_a_comma_a_line_from_end_to_end_and_the_very_wall() -> None:

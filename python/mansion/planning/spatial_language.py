@@ -282,7 +282,7 @@ _RESIDENTIAL: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("master_room", (r"master\s+bedroom", r"master'?s?\s+room", r"main\s+bedroom", r"master\s+suite", r"master")),
     ("common_room", (r"common\s+room", r"community\s+room", r"common", r"comm", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
     # "room 1", "room 2" with no type word: the numbered bedrooms
-    ("bedroom", (r"bedroom", r"bed", r"room(?=\s*-?\s*#?\s*\d)")),
+    ("bedroom", (r"bedroom", r"bed", r"room(?=\s*-?\s*#?\s*\d{1,2}\b(?!\s*(?:'|\"|x\b|\*|by\b|ft\b|feet\b|foot\b|m\b|sq|square|%|\.\d|/|:\s*\d)))")),
     ("bathroom", (r"bathroom", r"bath", r"comfort\s+room", r"washroom", r"restroom", r"toilet", r"wc", r"lavatory", r"shower\s+room", r"ensuite", r"en\s+suite")),
     ("living_room", (r"living\s+room", r"living\s+area", r"living", r"lounge", r"sitting\s+room", r"family\s+room", r"hall")),
     ("dining_room", (r"dining\s+room", r"dining\s+area", r"dining")),
@@ -328,7 +328,7 @@ def _lexicon(types: Sequence[str]) -> _Lexicon:
 
 def _type_of(lex: _Lexicon, word: str) -> str:
     for w, kind in sorted(lex.types.items(), key=lambda kv: -len(kv[0])):
-        if re.fullmatch(re.sub(r"\(\?=[^)]*\)", "", w), word):
+        if re.fullmatch(w.split("(?=")[0], word):
             return kind
     return word
 
