@@ -163,6 +163,10 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\bdog\s*leg\b", " "),
     # "South est corner": "est" is no word of its own after a compass word
     (r"\b(north|south)\s*-?\s*est\b", r"\1 east"),
+    # "Location: East side, Relationship: ...": a label whose room's name was left out (it opens
+    # the description of a room the text does not name, :func:`_unnamed_descriptions`)
+    # (also after a size the description ends on, "... 5 feet length Localization: east side")
+    (r"(^|[.;!?\n]\s*|\b(?:length|width|feet|ft)\s+)(?:location|localization)\s*:\s*(?=(?:north|south|east|west|centr|center|middle)\w*\b)", r"\1. location at "),
     # "Location: Common room 1 is on ...", "Size: It is ...": a heading before a sentence is no
     # part of it (left there, it hides the room that opens the sentence)
     (r"(^|[.;!?\n]\s*)(?:location|position|placement|relationships?|relations?|size|dimensions?|measurements?|area|sides|adjacency|orientation)\s*:", r"\1 "),
@@ -276,8 +280,9 @@ def _numbers(text: str) -> str:
 #: read through the planner's vocabulary (:data:`ROOM_SYNONYMS`) and their own name.
 _RESIDENTIAL: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("master_room", (r"master\s+bedroom", r"master'?s?\s+room", r"main\s+bedroom", r"master\s+suite", r"master")),
-    ("common_room", (r"common\s+room", r"community\s+room", r"common", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
-    ("bedroom", (r"bedroom", r"bed")),
+    ("common_room", (r"common\s+room", r"community\s+room", r"common", r"comm", r"com", r"guest\s+room", r"kids?'?\s+room", r"children'?s\s+room", r"spare\s+room", r"secondary\s+bedroom")),
+    # "room 1", "room 2" with no type word: the numbered bedrooms
+    ("bedroom", (r"bedroom", r"bed", r"room(?=\s*-?\s*#?\s*\d{1,2}\b(?!\s*(?:'|\"|x\b|\*|by\b|ft\b|feet\b|foot\b|m\b|sq|square|%|\.\d|/|:\s*\d)))")),
     ("bathroom", (r"bathroom", r"bath", r"comfort\s+room", r"washroom", r"restroom", r"toilet", r"wc", r"lavatory", r"shower\s+room", r"ensuite", r"en\s+suite")),
     ("living_room", (r"living\s+room", r"living\s+area", r"living", r"lounge", r"sitting\s+room", r"family\s+room", r"hall")),
     ("dining_room", (r"dining\s+room", r"dining\s+area", r"dining")),
@@ -323,7 +328,7 @@ def _lexicon(types: Sequence[str]) -> _Lexicon:
 
 def _type_of(lex: _Lexicon, word: str) -> str:
     for w, kind in sorted(lex.types.items(), key=lambda kv: -len(kv[0])):
-        if re.fullmatch(w, word):
+        if re.fullmatch(w.split("(?=")[0], word):
             return kind
     return word
 
@@ -332,7 +337,9 @@ def _type_of(lex: _Lexicon, word: str) -> str:
 
 _SUBJECT_LEAD = re.compile(
     # "The D:south facing R0 offers ...": a compass word in front of the room is about it
-    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|D:\w+|facing|"
+    # ("This house has a D:north-facing R0": a sentence about the house's room is about the room)
+    r"^(?:(?:the|a|an|one|this|that|there|is|are|also|then|and|with|plus|finally|lastly|next|,|:|-|D:\w+|-?facing|"
+    r"(?:house|home|apartment|flat|unit)\s+(?:has|features|includes|contains|offers)|"
     r"\d[\d.x*'\"]*(?:\s*(?:x|by|\*)\s*\d[\d.'\"]*)?)\s*)*$"
 )
 _PRONOUN = re.compile(r"^\s*(?:it|its|it's|this|the\s+room|this\s+room|the\s+size|size|which|they|their)\b")
@@ -480,6 +487,7 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
         if listed and opening is not None:
             subject = opening
 
+    _unnamed_descriptions(clauses, mentions, rooms)
     statements: list[Statement] = []
     unread: list[str] = []
     for clause in clauses:
@@ -494,6 +502,76 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
     return _resolve(statements, unread, mentions, rooms)
 
 
+#: A description that opens by placing a room it does not name: "Located in the middle of the
+#: D:north side.", "It was placed on the D:northwest side of the plan."
+#: ("placed in between the R1 and R2" alone goes on with the description before it)
+_UNNAMED_OPENER = re.compile(r"^\s*(?:(?:it\s+(?:is|was)\s+|it'?s\s+)(?:located|locate|placed|situated|positioned)|located|situated|positioned)\b")
+
+
+#: A label with no room before it: "Location: east side, Relationship: between living and
+#: master" (the room's name left out of a list of labelled descriptions)
+_UNNAMED_LABEL = re.compile(r"^\s*location\s+at\b")
+
+
+def _unnamed_descriptions(clauses: list[_Clause], mentions: list[RoomMention], rooms: Sequence[KnownRoom]) -> None:
+    """Give the descriptions that never name their room the rooms the text leaves undescribed.
+
+    Some descriptions go through the rooms one after another in alphabetical order of their
+    names and leave some of them unnamed ("Located in the middle of the north side. Size is 10 x
+    4 sq ft. Located in the south east corner. ... The bathroom is located in ..."), or leave the
+    room's name out of a list of labels ("Bathroom 1 location: west side. Location: east side.
+    Kitchen location: ..."). When the text opens so, each clause that opens by placing an unnamed
+    room ("located ...", "it was placed ...") starts such a description; a label with no room
+    starts one anywhere. When there are exactly as many of them as rooms no clause is about, the
+    unnamed descriptions take those rooms in alphabetical order, provided the named and the
+    unnamed descriptions together then follow that order. Otherwise nothing changes (the clauses
+    stay unread, or about the room named before them).
+    """
+    if not clauses:
+        return
+    opens_text = clauses[0].subject is None and bool(_UNNAMED_OPENER.match(clauses[0].text) or _UNNAMED_LABEL.match(clauses[0].text))
+    if not opens_text and not any(_UNNAMED_LABEL.match(c.text) for c in clauses):
+        return
+    by_type: dict[str, list[str]] = {}
+    for r in rooms:
+        by_type.setdefault(r.room_type, []).append(r.id)
+    # the text's descriptions in order: a named room's key, or None and an unnamed one's clauses
+    order: list[tuple[tuple[str, int | None] | None, list[int]]] = []
+    prev: int | None = None
+    for i, c in enumerate(clauses):
+        opens = bool(_UNNAMED_LABEL.match(c.text) or (opens_text and _UNNAMED_OPENER.match(c.text)))
+        if c.subject is not None and c.subject != prev:
+            order.append((_canonical(mentions[c.subject], by_type), []))
+        elif opens and (c.subject is None or c.subject == prev):
+            order.append((None, [i]))
+        elif order and order[-1][0] is None:
+            order[-1][1].append(i)
+        prev = c.subject
+    described = {key for key, _ in order if key is not None}
+    slots: list[tuple[str, int | None]] = []
+    for kind, ids in by_type.items():
+        said = {n for k, n in described if k == kind}
+        if len(ids) == 1:
+            slots += [] if said else [(kind, None)]
+        elif None in said:
+            return  # "the balcony" said of one of two: which one is left is not known
+        else:
+            slots += [(kind, n) for n in range(1, len(ids) + 1) if n not in said][: len(ids) - len(said)]
+    if len(slots) != sum(key is None for key, _ in order):
+        return
+    slots.sort(key=lambda k: (k[0], k[1] or 0))
+    it = iter(slots)
+    keys = [key if key is not None else next(it) for key, _ in order]
+    firsts = list(dict.fromkeys(keys))
+    if any((a[0], a[1] or 0) > (b[0], b[1] or 0) for a, b in zip(firsts, firsts[1:])):
+        return
+    for (key, unnamed), (kind, n) in zip(order, keys):
+        if key is None:
+            mentions.append(RoomMention(kind, n, kind.replace("_", " ")))
+            for i in unnamed:
+                clauses[i].subject = len(mentions) - 1
+
+
 #: Words after which a room name continues the clause rather than opening a new description.
 _LINKS = frozenset(
     "of off to with and by between from near beside behind inside within outside than as or nor the a an its their his her "
@@ -501,7 +579,7 @@ _LINKS = frozenset(
     "adjacent adjoining next nearby connects connected accessed accessible entrance bordered "
     "neighbored neighboured followed after before above below under over upside downside , "
     "touches touching touch borders bordering surrounded surrounding joining joins "
-    "both all also then while where which that".split()
+    "both all also then while where which that has have had contains containing includes including".split()
 )
 
 
@@ -533,7 +611,7 @@ def _run_on_split(sentence: str) -> list[tuple[str, bool]]:
 #: ...", "R3 measures ...", "R3: D:north side ..." (a room named as a label).
 _OPENS = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:it'?s\s+|it\s+is\s+)?(?:is|was|at|in|on|located|locate|location|lies|sits|measures|measuring|D:)|\s*:(?!\s*\d))")
 #: Openers no list of rooms goes on with: "..., R6 measures about", "R6: D:north side".
-_OPENS_STRONGLY = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:measures|measuring)\b|\s*:(?!\s*\d))")
+_OPENS_STRONGLY = re.compile(r"(?:the\s+)?R\d+(?:\s+(?:measures|measuring)\b|\s*:(?!\s*\d)|\s+location\s*:)")
 #: Openers that place the room: after another room's name they still start a new description
 #: ("... near the R5 the R1 is D:west side ...", "between R2 and R3 R4 is located ...").
 _OPENS_PLACING = re.compile(
@@ -683,7 +761,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     # 2. The subject relative to another room: "D:west of R1", "to the D:north of R1",
     # "on D:east side of R1", "D:upside of R1", "above R1", "R1's D:north side".
     pat = (
-        r"(?:\b(?:to|on|at|in|towards|toward)" + _ART + r"\s+)?(?:" + _DD + r")(?:\s+" + _PART + r")?\s+(?:of|from)"
+        r"(?:\b(?:to|on|at|in|towards|toward)" + _ART + r"\s+)?(?:" + _DD + r")(?:\s+(?:" + _PART + r"|wall))?\s+(?:of|from)"
         + _ART + r"\s+(" + _ROOMS + r")"
     )
     for m in re.finditer(pat, text):
@@ -714,7 +792,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     # "R1 on its D:right", "to the D:north is R1", "D:north is R1", "R1 D:below" (run-on style).
     pat_after = (
         r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|both))*"
-        r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r")?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
+        r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r"(?:\s+both)?)?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
         r"(?:\s+(?:side|end|edge|wall|corner|direction)(?!\s+of\b))?"
     )
     for m in re.finditer(pat_after, text):
@@ -804,6 +882,8 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     for pattern in (
         r"(?:\b(?:from|running|runs|run|runing|oriented|extends?|extending|stretch(?:es|ing)?|goes|going|spans?|spanning)\s+(?:\w+\s+){0,2}?)"
         r"D:\w+\s*(?:to|-|/|through|towards?)\s*(?:the\s+)?D:\w+",
+        # "at D:east to D:west direction": along that line, not at either end
+        r"\b(?:D:east\s+to\s+(?:the\s+)?D:west|D:west\s+to\s+(?:the\s+)?D:east|D:north\s+to\s+(?:the\s+)?D:south|D:south\s+to\s+(?:the\s+)?D:north)\s+direction\b",
         r"\b(?:its|it's|their|his|her)\s+(?:own\s+)?" + _DD + r"\s+" + _OWN_PART,
         r"\b(?:(?:small|little|tiny|narrow)\s+(?:portions?|parts?|spaces?|areas?|sections?)|extensions?|alcoves?|nooks?"
         r"|knock\s*outs?|notch(?:es)?|cut\s*outs?)\b"
@@ -831,7 +911,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             and not re.match(r"\s+wall\s+of\s+(?:the\s+)?" + _PLACE, after)
             and not (
                 re.match(r"\s+walls?\b", after)
-                and re.search(r"\b(?:at|on|along|against|by)\s+(?:the\s+)?$", before)
+                and re.search(r"\b(?:at|on|along|against|by)\s+(?:the\s+)?(?:very\s+|far\s+)?$", before)
                 and not re.search(r"\b(?:door|doorway|entry|entrance|window|opening)\b", rest_text[: m.start()])
             )
         ):
