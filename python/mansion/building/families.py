@@ -54,7 +54,7 @@ from shapely.geometry import Polygon
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.recut import (
-    _judged, _least, _wide_rectangle, area_shares, band_shares, cluster_cells, in_a_row,
+    _least, _redrawn, _wide_rectangle, area_shares, band_shares, cluster_cells, in_a_row, judged_score,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
@@ -198,13 +198,16 @@ def _relaid_family(
     head_width = needed_width(rooms[head].room_type, building_type)
     # the widths the rooms at their width now must keep (the quick refusal below)
     firm = {m: 0.0 if "narrow" in before[m] else width[m] for m in members}
-    best: tuple[float, FloorLayout, int] | None = None
+    best: tuple[float, np.ndarray, int] | None = None
     tried: set[bytes] = set()
+    # the rows are laid out in the family's box, not the floor's grid (a tenth of the cells)
+    rr, cc = np.nonzero(region)
+    box = (slice(int(rr.min()), int(rr.max()) + 1), slice(int(cc.min()), int(cc.max()) + 1))
     for turn in range(4):
-        view = np.rot90(region, turn)
+        view = np.rot90(region[box], turn)
         rows = np.nonzero(view.any(axis=1))[0]
         span = int(view.any(axis=0).sum()) * cell
-        turned_labels = np.rot90(labels, turn)
+        turned_labels = np.rot90(labels[box], turn)
         # the members' centroids along the band's side and across it, as they lie now
         along = {m: float(np.nonzero(turned_labels == keys[m])[1].mean()) for m in members}
         across = {m: float(np.nonzero(turned_labels == keys[m])[0].mean()) for m in members}
@@ -243,18 +246,21 @@ def _relaid_family(
                         for m in members if "narrow" not in before[m]
                     ):
                         continue
-                    new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
-                    seen = new.tobytes()
+                    laid = np.rot90(turned, -turn)
+                    seen = laid.tobytes()
                     if seen in tried:
                         continue
                     tried.add(seen)
-                    found = _judged(
+                    new = labels.astype(np.int32)
+                    new[box] = laid
+                    score = judged_score(
                         layout, new, family, keep, before, least, targets, passable, building_type, min_contact,
                         own=True,
                     )
-                    if found is not None and (best is None or found[0] < best[0] - EPS):
-                        best = (*found, len(groups))
-    return best
+                    if score is not None and (best is None or score < best[0] - EPS):
+                        best = (score, new, len(groups))
+    # only the kept re-layout is drawn
+    return None if best is None else (best[0], _redrawn(layout, best[1]), best[2])
 
 
 def _short_rows(

@@ -1079,8 +1079,29 @@ def _judged(
     own: bool = False,
     as_many: bool = False,
 ) -> tuple[float, FloorLayout] | None:
-    """(the cluster's defects, then its total miss; the layout) of a re-laid cluster when it
-    passes the rules: every room in one piece, at its minimum area, with a usable square, no new
+    """:func:`judged_score`, and the layout ``new`` draws when it passes."""
+    score = judged_score(
+        layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact, own, as_many,
+    )
+    return None if score is None else (score, _redrawn(layout, new))
+
+
+def judged_score(
+    layout: FloorLayout,
+    new: np.ndarray,
+    cluster: list[str],
+    keep: list[tuple[str, str, float, float]],
+    before: dict[str, set[str]],
+    least: dict[str, float],
+    targets: dict[str, float],
+    passable: dict[str, tuple[int, int]],
+    building_type: str | None,
+    min_contact: float,
+    own: bool = False,
+    as_many: bool = False,
+) -> float | None:
+    """The cluster's defects, then its total miss, of a re-laid cluster (``new``, the labels)
+    when it passes the rules, else None: every room in one piece, at its minimum area, with a usable square, no new
     part one cell wide, and every relation keeping its wall; fewer defects over the cluster, or
     as many where a room of it was unusable before. With ``own`` (a family re-laid for a room of
     it below its width, :mod:`mansion.building.families`), no room may gain a defect it lacked
@@ -1115,4 +1136,4 @@ def _judged(
         return None
     if _walls(new, ids, cell, keep, min_contact) is None:
         return None
-    return defects * 1e3 + miss, _redrawn(layout, new)
+    return defects * 1e3 + miss
