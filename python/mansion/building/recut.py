@@ -990,12 +990,12 @@ def _relaid_cluster(
             turned[strip] = keys[head]
             if in_a_row(turned, band, order, shares, keys, cell):
                 new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
-                found = _judged(
+                score = judged_score(
                     layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact,
                 )
-                if found is not None and (best is None or found[0] < best[0] - EPS):
-                    best = found
-    return best
+                if score is not None and (best is None or score < best[0] - EPS):
+                    best = (score, new)
+    return None if best is None else (best[0], _redrawn(layout, best[1]))
 
 
 def cluster_cells(
@@ -1063,27 +1063,6 @@ def in_a_row(
         turned[band & piece] = keys[m]
         start = stop + 1
     return True
-
-
-def _judged(
-    layout: FloorLayout,
-    new: np.ndarray,
-    cluster: list[str],
-    keep: list[tuple[str, str, float, float]],
-    before: dict[str, set[str]],
-    least: dict[str, float],
-    targets: dict[str, float],
-    passable: dict[str, tuple[int, int]],
-    building_type: str | None,
-    min_contact: float,
-    own: bool = False,
-    as_many: bool = False,
-) -> tuple[float, FloorLayout] | None:
-    """:func:`judged_score`, and the layout ``new`` draws when it passes."""
-    score = judged_score(
-        layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact, own, as_many,
-    )
-    return None if score is None else (score, _redrawn(layout, new))
 
 
 def judged_score(

@@ -20,7 +20,7 @@ squares, those that leave fewest (then take fewest cells) are judged, :data:`MAX
 (one that leaves a neighbour below its minimum area, as most do on a tight floor, is passed over
 without counting), a neighbour's cell the push leaves outside every 1 m square of the neighbour's going to a room
 beside it whose square it completes (a corridor's cell in the corner by a toilet, to the toilet),
-under the rules of a family re-laid (:func:`mansion.building.recut._judged`): no room of them
+under the rules of a family re-laid (:func:`mansion.building.recut.judged_score`): no room of them
 gains a defect of ``mansion eval realism`` it lacked, each stays in one piece at its minimum area
 with no new part one cell wide, and every relation keeps its wall. The room need not come out at
 its width: what is left of its strips (the arm of an L) goes to the mends after this one (a hall
@@ -41,7 +41,7 @@ import numpy as np
 
 from mansion.building.load_bearing import first_round_groups
 from mansion.building.merge import mask_defects, square_cover
-from mansion.building.recut import _judged, _kept_walls, _least, _passable, _squares, _wide_rectangle
+from mansion.building.recut import _kept_walls, _least, _passable, _redrawn, _squares, _wide_rectangle, judged_score
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
@@ -209,7 +209,7 @@ def _pushed(
     was = _uncovered(mask, width, cell)
     before: dict[str, set[str]] = {}
     passable: dict[str, tuple[int, int]] = {}
-    best: tuple[tuple[int, float], FloorLayout] | None = None
+    best: tuple[tuple[int, float], np.ndarray] | None = None
     for axis in (((1, 0), (-1, 0)), ((0, 1), (0, -1))):
         ahead, back = (_pushes(mask, givers, dy, dx, reach) for dy, dx in axis)
         none = np.zeros_like(mask)
@@ -271,13 +271,14 @@ def _pushed(
             if area is not None:
                 least[room] = area
             targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in cluster}
-            found = _judged(
+            score = judged_score(
                 layout, new.astype(np.int32), cluster, _kept_walls(layout, graph, set(cluster)),
                 {rid: before[rid] for rid in cluster}, least, targets,
                 {rid: passable[rid] for rid in cluster}, building_type, min_contact, own=True, as_many=True,
             )
-            if found is not None:
-                if best is None or (left, found[0]) < best[0]:
-                    best = ((left, found[0]), found[1])
+            if score is not None:
+                if best is None or (left, score) < best[0]:
+                    best = ((left, score), new.astype(np.int32))
                 break  # the best of this axis
-    return None if best is None else best[1]
+    # only the kept push is drawn
+    return None if best is None else _redrawn(layout, best[1])
