@@ -1080,12 +1080,13 @@ def judged_score(
     as_many: bool = False,
 ) -> float | None:
     """The cluster's defects, then its total miss, of a re-laid cluster (``new``, the labels)
-    when it passes the rules, else None: every room in one piece, at its minimum area, with a usable square, no new
-    part one cell wide, and every relation keeping its wall; fewer defects over the cluster, or
-    as many where a room of it was unusable before. With ``own`` (a family re-laid for a room of
-    it below its width, :mod:`mansion.building.families`), no room may gain a defect it lacked
-    and the defects must be fewer; with ``as_many`` too, as many will do (a room pushed out of
-    its strips, :mod:`mansion.building.sides`, whose caller judges its own progress)."""
+    when it passes the rules, else None: every room in one piece, at its minimum area, with a
+    usable square, no new part one cell wide, and every relation keeping its wall; fewer defects
+    over the cluster, or as many where a room of it was unusable before. With ``own`` (a family
+    re-laid for a room of it below its width, :mod:`mansion.building.families`), no room may
+    gain a defect it lacked and the defects must be fewer; with ``as_many`` too, as many will do
+    (a room pushed out of its strips, :mod:`mansion.building.sides`, whose caller judges its own
+    progress)."""
     grid = layout.grid
     ids = list(grid.ids)
     cell = grid.cell_size

@@ -11,22 +11,24 @@ architect moves the wall the whole metre.
 :func:`widen_sides` takes each room below its width (but cores) and, along each axis, pushes it
 out on one side, or on both opposite sides about evenly, by up to its width in cells: every cell
 of a neighbour within that reach of the room in that direction goes to the room, across the whole
-side, so the walls it moves stay straight (a core or the outline stops it); a push on one side is
+side, so the walls it moves stay straight (a core or the outline stops it). A push on one side is
 also tried with the rooms it takes from sliding over as far into the rooms beyond them
 (:data:`SLIDES`: a group room at its width beside the hall moves a metre into the sleep room
-beyond it rather than giving the metre). The donors are the rooms those cells belonged to (never a core; on floors that carry walls, only rooms of the room's
-own first-round region). Of the pushes that leave fewer of the room's cells outside its width's
-squares, those that leave fewest (then take fewest cells) are judged, :data:`MAX_JUDGED` per axis
-(one that leaves a neighbour below its minimum area, as most do on a tight floor, is passed over
-without counting), a neighbour's cell the push leaves outside every 1 m square of the neighbour's going to a room
-beside it whose square it completes (a corridor's cell in the corner by a toilet, to the toilet),
-under the rules of a family re-laid (:func:`mansion.building.recut.judged_score`): no room of them
-gains a defect of ``mansion eval realism`` it lacked, each stays in one piece at its minimum area
-with no new part one cell wide, and every relation keeps its wall. The room need not come out at
-its width: what is left of its strips (the arm of an L) goes to the mends after this one (a hall
-made of it, :mod:`mansion.building.halls`). Of the pushes that pass, the one leaving fewest cells
-outside the squares wins, then the fewest defects, then the rooms closest to their planned areas.
-Nothing of the program changes, so nothing is recorded.
+beyond it rather than giving the metre). The donors are the rooms those cells belonged to (never
+a core; on floors that carry walls, only rooms of the room's own first-round region). Of the
+pushes that leave fewer of the room's cells outside its width's squares, those that leave fewest
+(then take fewest cells) are judged, :data:`MAX_JUDGED` per axis (one that leaves a neighbour
+below its minimum area, as most do on a tight floor, is passed over without counting); a
+neighbour's cell the push leaves outside every 1 m square of the neighbour's goes to a room
+beside it whose square it completes (a corridor's cell in the corner by a toilet, to the
+toilet). They are judged under the rules of a family re-laid
+(:func:`mansion.building.recut.judged_score`): no room of them gains a defect of ``mansion eval
+realism`` it lacked, each stays in one piece at its minimum area with no new part one cell wide,
+and every relation keeps its wall. The room need not come out at its width: what is left of its
+strips (the arm of an L) goes to the mends after this one (a hall made of it,
+:mod:`mansion.building.halls`). Of the pushes that pass, the one leaving fewest cells outside the
+squares wins, then the fewest defects, then the rooms closest to their planned areas. Nothing of
+the program changes, so nothing is recorded.
 
 The same pushes serve a room below its minimum area (:func:`enlarge_rooms`): of those that bring
 it to its minimum, the ones taking fewest cells are judged the same way. The floor's steps run it

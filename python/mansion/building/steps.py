@@ -27,7 +27,9 @@ recorded on the
 floor ("ward_5 left out (with ward_5_ensuite): laid out at 7.5 m², below its 14.5 m² minimum";
 issue 14). What that cannot mend (floors that carry walls, layouts refused, rooms the floor
 cannot spare) is first cut again as a rectangle inside the region it was cut from
-(:mod:`mansion.building.recut`: a 2.2 m² bathroom inside its flat), then merged into a neighbour
+(:mod:`mansion.building.recut`: a 2.2 m² bathroom inside its flat), then pushes its walls out
+into its neighbours as far as its minimum needs (:func:`mansion.building.sides.enlarge_rooms`,
+again once the width mends are done), then merged into a neighbour
 where an architect would, or dropped where the program can do without it
 (:mod:`mansion.building.merge`: a toilet lobby into its corridor, a small ward into the ward
 beside it, a flat's second bedroom into its living room), each recorded. Then rooms below their
@@ -35,9 +37,10 @@ clear width are cut again as rectangles where a neighbour can give them floor
 (:func:`mansion.building.recut.recut_narrow_rooms`), the strips of those still below it are
 handed to the rooms beside them (:func:`mansion.building.recut.hand_off_strips`); then, in the
 order of :data:`NARROW_MENDS`, a room still below its width pushes its walls out into the rooms
-beside it (:mod:`mansion.building.sides`), a region and the rooms cut from it, one of them still
-below its width, are laid out again as a row along one side (:mod:`mansion.building.families`:
-an open office curled round its meeting room), a room below its width only by a pocket beside a core
+beside it or slides them over (:mod:`mansion.building.sides`), a region and the rooms cut from
+it, one of them still below its width, are laid out again in a row along one side or in two
+along opposite sides (:mod:`mansion.building.families`: an open office curled round its meeting
+room; a hub moves the rooms it closes round to a side), a room below its width only by a pocket beside a core
 keeps it as a store (:mod:`mansion.building.stores`), a room below its width by arms that carry
 its doors keeps them as halls (:mod:`mansion.building.halls`: a play hall's arm to its sleep
 room becomes a corridor), what is still below its width merges like a room too small where the
