@@ -196,7 +196,8 @@ def _relaid_family(
     targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in family}
     width = {m: needed_width(rooms[m].room_type, building_type) for m in members}
     head_width = needed_width(rooms[head].room_type, building_type)
-    # the widths the rooms at their width now must keep (the quick refusal below)
+    # the widths the rooms at their width now must keep (0 for those below it): the bands too
+    # shallow or short for them are skipped, and the rows that leave them narrower refused
     firm = {m: 0.0 if "narrow" in before[m] else width[m] for m in members}
     best: tuple[float, np.ndarray, int] | None = None
     tried: set[bytes] = set()
@@ -242,8 +243,8 @@ def _relaid_family(
                     if any(
                         min(
                             int((turned == keys[m]).any(axis=1).sum()), int((turned == keys[m]).any(axis=0).sum()),
-                        ) * cell + EPS < width[m]
-                        for m in members if "narrow" not in before[m]
+                        ) * cell + EPS < firm[m]
+                        for m in members if firm[m]
                     ):
                         continue
                     laid = np.rot90(turned, -turn)

@@ -208,7 +208,8 @@ def _pushed(
     may_take[key] = True
     width = needed_width(rooms[room].room_type, building_type)
     reach = int(np.ceil(width / cell - 1e-6))
-    was = _uncovered(mask, width, cell)
+    # what a push must improve on: the cells outside the width's squares (pushing for area, none)
+    was = _uncovered(mask, width, cell) if area is None else 0
     before: dict[str, set[str]] = {}
     passable: dict[str, tuple[int, int]] = {}
     best: tuple[tuple[int, float], np.ndarray] | None = None
