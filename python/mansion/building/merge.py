@@ -311,16 +311,33 @@ def _may_drop(
     circulation (a corridor is planned, not what is left over), to a smaller kind of room (the
     table's minimum area: a meeting room's floor never makes a phone booth its size) nor across
     the sanitary line (a dropped bedroom never enlarges a bathroom)."""
-    if gone.id == graph.hub.id or gone.is_core or stays.is_core or gone.id in keep:
+    return may_spare(gone, graph, parent, keep) and may_receive(gone, stays)
+
+
+def may_receive(gone: RoomNode, stays: RoomNode) -> bool:
+    """Whether ``stays`` may take floor of a dropped room ``gone`` (:func:`_may_drop`'s rules on
+    the room that takes it): not a core nor circulation, on the same side of the sanitary line,
+    and at least as large a kind of room."""
+    if stays.is_core:
         return False
     # a corridor is planned, never what is left over (issue 14)
-    if room_design(gone.room_type).circulation or room_design(stays.room_type).circulation:
+    if room_design(stays.room_type).circulation:
         return False
     if (design_key(gone.room_type) in SANITARY_TYPES) != (design_key(stays.room_type) in SANITARY_TYPES):
         return False
     # to a room at least as large a kind: a meeting room's floor to the open office, never to a
     # phone booth that would become a room of its size
-    if room_design(stays.room_type).min_area < room_design(gone.room_type).min_area:
+    return room_design(stays.room_type).min_area >= room_design(gone.room_type).min_area
+
+
+def may_spare(gone: RoomNode, graph: RoomGraph, parent: dict[str, str], keep: frozenset[str]) -> bool:
+    """Whether the program can do without ``gone`` (:func:`_may_drop`'s rules on the room that
+    goes): not the hub, a core, circulation nor a room the description asked for; a room a home
+    needs only where its flat keeps another of its kind, any other only where the floor keeps
+    another of its type."""
+    if gone.id == graph.hub.id or gone.is_core or gone.id in keep:
+        return False
+    if room_design(gone.room_type).circulation:
         return False
     kind = _kind(gone.room_type)
     if kind is None:

@@ -69,6 +69,7 @@ from mansion.building.load_bearing import (
     first_round_walls,
     retarget_first_round,
 )
+from mansion.building.dissolve import dissolve_unfit_rooms
 from mansion.building.families import relay_families
 from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
@@ -363,6 +364,10 @@ STORE_POCKETS = True
 NARROW_MENDS = ("sides", "families", "stores", "halls", "merges", "drops")
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
+
+#: Whether a room the mends leave below its clear width or minimum area is, last, left out where
+#: the program can spare it, its floor shared by the rooms beside it (:mod:`mansion.building.dissolve`).
+DISSOLVE = True
 
 
 def _fits_better(
@@ -669,6 +674,19 @@ def solve_building_floor(
             layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
             same_region=program.load_bearing_walls,
         )
+        if DISSOLVE:
+            # last, a room no mend brought to its width or minimum area is left out where the
+            # program can spare it, its floor shared by the rooms beside it
+            # (mansion.building.dissolve)
+            still = {
+                **dict.fromkeys(narrow_rooms(layout.rooms, program.building_type), NARROW_WHY),
+                **unfit_rooms(layout.rooms, graph),
+            }
+            layout, graph, dissolved = dissolve_unfit_rooms(
+                layout, graph, still, program.building_type, keep=asked,
+                min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+            )
+            mended += dissolved
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:

@@ -1,0 +1,132 @@
+"""Rooms no mend brings to their width dissolved, their floor shared by the rooms beside them
+(mansion.building.dissolve)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_merge import graph_of, layout_of
+
+import mansion.building.steps as steps
+from mansion.building import generate_building
+from mansion.building.dissolve import dissolve_unfit_rooms
+from mansion.building.merge import grid_adjacencies, mask_defects, merge_unfit_rooms
+from mansion.building.steps import NARROW_WHY, narrow_rooms
+from mansion.eval.realism import bench_case
+
+CELL = 0.5
+
+# Half-metre cells, the top line the floor's far side: a hotel's corridor (C, the hub) along the
+# bottom and up the east side; guest room N a strip 2.5 m wide and 12 m long on the west (its
+# width 3.3 m), with guest rooms A and B, 5 m × 6 m each, stacked between it and the corridor.
+HOTEL = "\n".join(
+    ["NNNNN" + "A" * 10 + "CCCC"] * 12
+    + ["NNNNN" + "B" * 10 + "CCCC"] * 12
+    + ["C" * 19] * 4
+)
+NAMES = {
+    "C": ("corridor", "main", "corridor", 4.0),
+    "N": ("guest_room_3", "Entities", "guest_room", 16.0),
+    "A": ("guest_room_1", "Entities", "guest_room", 16.0),
+    "B": ("guest_room_2", "Entities", "guest_room", 16.0),
+}
+EDGES = [("corridor", "guest_room_3"), ("corridor", "guest_room_1"), ("corridor", "guest_room_2")]
+
+
+def narrow(layout, graph):  # noqa: ANN001, ANN201
+    return dict.fromkeys(narrow_rooms(layout.rooms, "hotel"), NARROW_WHY)
+
+
+def test_a_strip_of_a_guest_room_is_shared_by_the_two_rooms_beside_it() -> None:
+    layout, graph = layout_of(HOTEL, NAMES), graph_of(NAMES, EDGES)
+    assert narrow(layout, graph) == {"guest_room_3": NARROW_WHY}
+    # neither room beside it can take it whole: either would become an L with a 2.5 m arm
+    assert merge_unfit_rooms(layout, graph, narrow, "hotel", cure="narrow")[2] == []
+    shared, fewer, notes = dissolve_unfit_rooms(layout, graph, narrow(layout, graph), "hotel")
+    assert notes == [
+        f"guest_room_3 dropped, its floor shared by guest_room_1, guest_room_2 (guest_room_3 {NARROW_WHY})"
+    ]
+    assert "guest_room_3" not in {n.id for n in fewer.nodes} | {r.id for r in shared.rooms} | set(shared.grid.ids)
+    # each takes the half beside it: two rooms 7.5 m × 6 m, at their width, with no defect
+    for rid in ("guest_room_1", "guest_room_2"):
+        room = shared.room(rid)
+        assert room.area == 45.0 and room.target_area == 45.0
+        assert next(n for n in fewer.nodes if n.id == rid).area == 20.0 + 15.0
+        cells = shared.grid.array() == shared.grid.ids.index(rid)
+        assert not mask_defects(cells, "guest_room", "hotel", CELL)
+    assert narrow_rooms(shared.rooms, "hotel") == set()
+    # no cell lost; the walls are drawn again; every room keeps its door to the corridor, and
+    # the dropped room's relation goes (its takers already have theirs)
+    assert (shared.grid.array() >= 0).sum() == (layout.grid.array() >= 0).sum()
+    assert shared.adjacencies == grid_adjacencies(shared.grid.array(), shared.grid.ids, CELL)
+    assert {frozenset((e.source, e.target)) for e in fewer.edges} == {
+        frozenset(("corridor", "guest_room_1")), frozenset(("corridor", "guest_room_2")),
+    }
+    for rid in ("guest_room_1", "guest_room_2"):
+        assert shared.adjacency("corridor", rid).longest >= 0.9  # type: ignore[union-attr]
+
+
+def test_the_dropped_rooms_doors_pass_to_every_room_that_takes_their_wall() -> None:
+    # a store L along the strip's west side opens into it: its door passes to both rooms that
+    # take the strip's floor, each now with a 6 m wall with it
+    picture = "\n".join(
+        ["LLLLNNNNN" + "A" * 10 + "CCCC"] * 12 + ["LLLLNNNNN" + "B" * 10 + "CCCC"] * 12 + ["C" * 23] * 4
+    )
+    names = {**NAMES, "L": ("storage", "Entities", "storage", 2.0)}
+    edges = [*EDGES, ("corridor", "storage"), ("guest_room_3", "storage")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    shared, fewer, notes = dissolve_unfit_rooms(layout, graph, narrow(layout, graph), "hotel")
+    assert len(notes) == 1
+    pairs = {frozenset((e.source, e.target)) for e in fewer.edges}
+    assert {frozenset(("guest_room_1", "storage")), frozenset(("guest_room_2", "storage"))} <= pairs
+    assert shared.adjacency("guest_room_1", "storage").longest == 6.0  # type: ignore[union-attr]
+
+
+def test_a_room_others_are_reached_through_stays() -> None:
+    # guest_room_2 is reached only through the strip, so it was cut from it: the strip stays
+    edges = [("corridor", "guest_room_3"), ("corridor", "guest_room_1"), ("guest_room_3", "guest_room_2")]
+    layout, graph = layout_of(HOTEL, NAMES), graph_of(NAMES, edges)
+    assert dissolve_unfit_rooms(layout, graph, narrow(layout, graph), "hotel") == (layout, graph, [])
+
+
+@pytest.mark.parametrize("why", ["asked", "last of its type", "circulation only"])
+def test_a_room_the_program_cannot_spare_or_no_room_may_take_stays(why: str) -> None:
+    names, keep = dict(NAMES), ()
+    if why == "asked":
+        keep = ("guest_room_3",)
+    elif why == "last of its type":
+        names["N"] = ("laundry", "Entities", "laundry", 6.0)
+    else:
+        # its only neighbours are corridors: a corridor is planned, never what is left over
+        names["A"] = ("wing_1", "Entities", "corridor", 4.0)
+        names["B"] = ("wing_2", "Entities", "corridor", 4.0)
+    edges = [(a, b) for a, b in ((names["C"][0], names[k][0]) for k in "NAB")]
+    layout, graph = layout_of(HOTEL, names), graph_of(names, edges)
+    unfit = {names["N"][0]: NARROW_WHY}
+    assert dissolve_unfit_rooms(layout, graph, unfit, "hotel", keep=keep) == (layout, graph, [])
+
+
+def test_generated_floors_record_each_room_dissolved_and_keep_the_rest() -> None:
+    # an office whose floor 1 keeps a meeting room 2.5 m wide no mend widens
+    kind, floors, text = bench_case(61)
+    on = generate_building(text, building_type=kind, floors=floors, seed=61)
+    steps.DISSOLVE = False
+    try:
+        off = generate_building(text, building_type=kind, floors=floors, seed=61)
+    finally:
+        steps.DISSOLVE = True
+    found = 0
+    for a, b in zip(on.floors, off.floors):
+        notes = [x for x in a.relaxations if "its floor shared by" in x]
+        assert [x for x in a.relaxations if x not in notes] == b.relaxations
+        for note in notes:
+            room = note.split(" dropped")[0]
+            takers = note.split("shared by ")[1].split(" (")[0].split(", ")
+            found += 1
+            assert room in narrow_rooms(b.layout.rooms, on.program.building_type)
+            assert room not in {n.id for n in a.graph.nodes} | set(a.layout.grid.ids)
+            # what it held went to its takers, cell for cell
+            before, after = b.layout.grid.array(), a.layout.grid.array()
+            held = before == b.layout.grid.ids.index(room)
+            assert {a.layout.grid.ids[k] for k in np.unique(after[held])} <= set(takers)
+    assert found >= 1
