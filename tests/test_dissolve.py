@@ -89,6 +89,28 @@ def test_a_room_others_are_reached_through_stays() -> None:
     assert dissolve_unfit_rooms(layout, graph, narrow(layout, graph), "hotel") == (layout, graph, [])
 
 
+def test_a_room_the_program_cannot_spare_takes_the_floor_of_one_beside_it_that_it_can() -> None:
+    # the office floor's only board room, 3 m wide (its width 3.6 m), between the corridor's
+    # end and the first of two meeting rooms: the meeting room is left out for it
+    picture = "\n".join(["RRRRRR" + "MMMMMM" + "NNNNNNNN"] * 12 + ["C" * 20] * 4)
+    names = {
+        "C": ("corridor", "main", "corridor", 4.0),
+        "R": ("board_room", "Entities", "board_room", 20.0),
+        "M": ("meeting_room_1", "Entities", "meeting_room", 10.0),
+        "N": ("meeting_room_2", "Entities", "meeting_room", 10.0),
+    }
+    edges = [("corridor", "board_room"), ("corridor", "meeting_room_1"), ("corridor", "meeting_room_2")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    unfit = dict.fromkeys(narrow_rooms(layout.rooms, "office"), NARROW_WHY)
+    assert unfit == {"board_room": NARROW_WHY}
+    shared, fewer, notes = dissolve_unfit_rooms(layout, graph, unfit, "office")
+    assert len(notes) == 1 and notes[0].startswith("meeting_room_1 dropped, its floor shared by board_room")
+    assert notes[0].endswith(f"(board_room {NARROW_WHY})")
+    assert narrow_rooms(shared.rooms, "office") == set()
+    assert "meeting_room_1" not in {n.id for n in fewer.nodes}
+    assert shared.room("board_room").area >= 20.0
+
+
 @pytest.mark.parametrize("why", ["asked", "last of its type", "circulation only"])
 def test_a_room_the_program_cannot_spare_or_no_room_may_take_stays(why: str) -> None:
     names, keep = dict(NAMES), ()

@@ -29,6 +29,11 @@ minimum area or without a usable square, the smallest first, where
   one with a door that no taker has the wall for refuses the way. No room loses its way in: a
   room reached only through the dropped one was cut from it, and such a room stays.
 
+A room the program cannot spare (a floor's only board room, 3 m wide where it needs 3.6 m) may
+instead take the floor of a room beside it that the program can spare (one of two meeting
+rooms), by the same rules, where it is itself among the takers and comes out at its width and
+minimum area.
+
 Of the ways that pass, the one with fewest defects over the rooms that take a part wins, then
 the one that leaves them closest to their planned areas, then fewer rooms. Each dissolved room is
 recorded in the floor's ``relaxations``; the rooms that take its floor take its share of the
@@ -47,7 +52,7 @@ from mansion.building.merge import (
     DOOR_WIDTH, grid_adjacencies, mask_defects, may_receive, may_spare, rooms_from_grid,
 )
 from mansion.building.recut import _connected, _passable, _walls
-from mansion.models.graph import RoomEdge, RoomGraph
+from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import SANITARY_TYPES, design_key, room_design
 from mansion.models.room_shape import EPS
@@ -78,12 +83,26 @@ def dissolve_unfit_rooms(
         if room not in {n.id for n in graph.nodes}:
             continue
         found = _best_dissolve(layout, graph, room, building_type, kept, min_contact, same_region)
+        # a room the program cannot spare (the floor's only music room, a board room) may take
+        # the floor of a room beside it that it can, where that brings it to its width and area
+        for other in [] if found is not None else _beside(layout, room):
+            found = _best_dissolve(
+                layout, graph, other, building_type, kept, min_contact, same_region, cure=room,
+            )
+            if found is not None:
+                break
         if found is None:
             continue
         layout, graph, gone, takers = found
         also = f" with {', '.join(gone[1:])}" if len(gone) > 1 else ""
-        notes.append(f"{room} dropped{also}, its floor shared by {', '.join(takers)} ({room} {unfit[room]})")
+        why = f"{room} {unfit[room]}"
+        notes.append(f"{gone[0]} dropped{also}, its floor shared by {', '.join(takers)} ({why})")
     return layout, graph, notes
+
+
+def _beside(layout: FloorLayout, room: str) -> list[str]:
+    """The rooms sharing a wall with ``room``, by id."""
+    return sorted(a.b if a.a == room else a.a for a in layout.adjacencies if room in (a.a, a.b))
 
 
 def _grow(mask: np.ndarray) -> np.ndarray:
@@ -123,9 +142,11 @@ def _best_dissolve(
     keep: frozenset[str],
     min_contact: float,
     same_region: bool,
+    cure: str | None = None,
 ) -> tuple[FloorLayout, RoomGraph, list[str], list[str]] | None:
     """(the layout, the graph, the rooms that went, the rooms that took their floor) of the best
-    way to dissolve ``room``, or None when none passes the module's rules."""
+    way to dissolve ``room``, or None when none passes the module's rules. ``cure``: a room that
+    must be among the takers and come out at its width and minimum area."""
     nodes = {n.id: n for n in graph.nodes}
     parent = cut_parents(graph)
     if not may_spare(nodes[room], graph, parent, keep):
@@ -165,7 +186,7 @@ def _best_dissolve(
         if may.any():
             allowed[other] = may
     beside = sorted(allowed)
-    if not beside:
+    if not beside or (cure is not None and cure not in beside):
         return None
     # the relations that must keep their walls: the other rooms' own, and the dropped rooms'
     # relations with rooms that stay, which pass to whichever taker then has the wall
@@ -188,11 +209,13 @@ def _best_dissolve(
     best: tuple[tuple[int, float, int, tuple[str, ...]], np.ndarray, dict[tuple[str, str], list[str]]] | None = None
     for n in range(1, min(MAX_SHARERS, len(beside)) + 1):
         for takers in itertools.combinations(beside, n):
+            if cure is not None and cure not in takers:
+                continue
             new = _grown(labels, hole, {ids.index(t): allowed[t] for t in takers})
             if new is None:
                 continue
             judged = _judged(new, ids, cell, takers, before, rooms, building_type)
-            if judged is None:
+            if judged is None or (cure is not None and not _cured(new == ids.index(cure), nodes[cure], rooms, building_type, cell)):
                 continue
             walls = _walls(new, ids, cell, kept_walls, min_contact)
             if walls is None:
@@ -209,6 +232,13 @@ def _best_dissolve(
     (_, _, _, takers), new, passed = best
     took = {t: float((hole & (new == ids.index(t))).sum()) * cell * cell for t in takers}
     return _dissolved_layout(layout, new, gone, took), _dissolved_graph(graph, gone, took, passed), gone, list(takers)
+
+
+def _cured(mask: np.ndarray, node: RoomNode, rooms: dict, building_type: str | None, cell: float) -> bool:
+    """Whether the room ``node`` holding the cells ``mask`` is at its width and minimum area."""
+    found = mask_defects(mask, rooms[node.id].room_type, building_type, cell)
+    least = node.min_area if node.min_area is not None else room_design(node.room_type).min_area
+    return "narrow" not in found and float(mask.sum()) * cell * cell + EPS >= least
 
 
 def _judged(
