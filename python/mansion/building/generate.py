@@ -61,6 +61,8 @@ __all__ = [
 #: rooms left out, a larger circulation reserve; see ``ProgramOptions.relax``), each from its own
 #: seed. A failed floor solve or a program that does not fit its floor moves to the next one.
 PROGRAM_ATTEMPTS = 4
+#: Relayouts a floor may be given at most (:func:`generate_building`'s ``relayouts``).
+MAX_RELAYOUTS = 5
 
 
 def _footprint_outline(footprint: Footprint | str | os.PathLike[str] | None) -> Any:
@@ -87,6 +89,7 @@ def generate_building(
     min_contact: float = 1.0,
     weights: EnergyWeights | None = None,
     min_width: float | None = MIN_CLEAR_WIDTH,
+    relayouts: int = 0,
     progress: Progress | None = None,
 ) -> Building:
     """Generate a checked multi-floor building (plans only) from a plain-language description.
@@ -116,6 +119,12 @@ def generate_building(
             own widths from the design table (up to :data:`~mansion.planning.topology.MAX_NODE_WIDTH`)
             come on top. None: no width rule at all (the solver as the paper describes it; rooms
             then keep slivers and one-cell necks).
+        relayouts: times a floor the mends leave with rooms below their minimum area or width
+            is laid out again whole under a seed of its own, keeping the layout with fewer such
+            rooms (offline planner, floors that carry no walls; see
+            :func:`mansion.building.steps.solve_building_floor`). 0 (the default) for time; 1
+            cut the offline hundred's rooms below their width from 46 to 30 for about 1.15
+            times the generation time.
         progress: called as ``progress(message, done, total)`` as floors are solved.
 
     Raises:
@@ -131,6 +140,8 @@ def generate_building(
         or not math.isfinite(min_width) or min_width <= 0
     ):
         raise InvalidInputError(f"min_width must be a positive number of metres or None, got {min_width!r}")
+    if isinstance(relayouts, bool) or not isinstance(relayouts, int) or not 0 <= relayouts <= MAX_RELAYOUTS:
+        raise InvalidInputError(f"relayouts must be an integer from 0 to {MAX_RELAYOUTS}, got {relayouts!r}")
     if not isinstance(description, str) or not description.strip():
         raise InvalidInputError("the description is empty; say what to build")
     plan = get_planner(planner)
@@ -162,7 +173,7 @@ def generate_building(
             continue
         try:
             done = _solve_floors(plan, program, seed, solver, progress, description,
-                                 drop_widths=attempt == PROGRAM_ATTEMPTS - 1)
+                                 drop_widths=attempt == PROGRAM_ATTEMPTS - 1, relayouts=relayouts)
         except (InfeasibleLayoutError, InvalidInputError) as exc:
             # InvalidInputError here is the solver refusing a program larger than its floor.
             if attempt == PROGRAM_ATTEMPTS - 1:
@@ -182,7 +193,7 @@ def generate_building(
 
 def _solve_floors(
     plan: BuildingPlanner, program: BuildingProgram, seed: int, solver: dict[str, Any], progress: Progress | None,
-    description: str, *, drop_widths: bool = True,
+    description: str, *, drop_widths: bool = True, relayouts: int = 0,
 ) -> list[Floor]:
     """Every floor of ``program``, solved one after another (copies repeat their original);
     ``description``'s position words seed the rounds (:mod:`mansion.floorplan.text_seeds`);
@@ -199,5 +210,5 @@ def _solve_floors(
         graph = plan.plan_topology(program, index)
         below = done[index - 1] if index > 0 else None
         done.append(solve_building_floor(program, index, graph, below, seed, solver, description=description,
-                                         drop_widths=drop_widths))
+                                         drop_widths=drop_widths, relayouts=relayouts))
     return done

@@ -225,6 +225,9 @@ def eval_realism(
     narrow: Annotated[
         float, typer.Option(min=0.1, help="Sliver width and usable square side, metres (parts this wide or narrower are slivers).")
     ] = 1.0,
+    relayouts: Annotated[
+        int, typer.Option(min=0, max=5, help="--generate: relayouts per floor (see mansion generate --relayouts).")
+    ] = 0,
 ) -> None:
     """Room realism: slivers, elongated and unusable rooms, rooms below their type's minimum area
     or width, corridor widths and rooms without a corridor door, per building type and overall,
@@ -241,7 +244,7 @@ def eval_realism(
             task = bar.add_task("buildings", total=(len(buildings or []) + generate) or None)
             report = evaluate_realism(
                 buildings or [], generate=generate, seed=seed, reference=reference, narrow=narrow,
-                progress=lambda done: bar.update(task, completed=done),
+                relayouts=relayouts, progress=lambda done: bar.update(task, completed=done),
             )
         if json_out is not None:
             report.save(json_out)

@@ -319,14 +319,14 @@ def _load_buildings(paths: Iterable[str | os.PathLike[str]]) -> Iterator[Buildin
         yield Building.load(path)
 
 
-def _generated(count: int, seed: int, failures: list[str]) -> Iterator[Building]:
+def _generated(count: int, seed: int, failures: list[str], relayouts: int = 0) -> Iterator[Building]:
     from mansion.building import generate_building
     from mansion.exceptions import MansionError
 
     for s in range(seed, seed + count):
         kind, floors, text = bench_case(s)
         try:
-            yield generate_building(text, building_type=kind, floors=floors, seed=s)
+            yield generate_building(text, building_type=kind, floors=floors, seed=s, relayouts=relayouts)
         except MansionError as exc:
             failures.append(f"seed {s} ({kind}, {floors} floors): {exc}")
 
@@ -340,15 +340,17 @@ def evaluate_realism(
     scale: float = T2D_METRES_PER_PIXEL,
     narrow: float = NARROW,
     progress: Callable[[int], None] | None = None,
+    relayouts: int = 0,
 ) -> RealismReport:
     """Measure buildings (folders or building.json files, and/or ``generate`` offline buildings
-    from benchmark seed ``seed`` on) and, when given, the T2D plans of ``reference``."""
+    from benchmark seed ``seed`` on, with ``relayouts`` per floor) and, when given, the T2D plans
+    of ``reference``."""
     failures: list[str] = []
     by_type: dict[str, list[RoomRecord]] = {}
     counts: Counter[str] = Counter()
     sources: list[Iterable[Building]] = [_load_buildings(buildings)]
     if generate:
-        sources.append(_generated(generate, seed, failures))
+        sources.append(_generated(generate, seed, failures, relayouts))
     done = 0
     for source in sources:
         for b in source:
