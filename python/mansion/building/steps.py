@@ -605,15 +605,8 @@ def _left_unfit(floor: Floor, building_type: str | None) -> tuple[int, int]:
 
 
 def _solve_building_floor(
-    program: BuildingProgram,
-    index: int,
-    graph: RoomGraph,
-    below: Floor | None,
-    seed: int,
-    solver: dict[str, Any],
-    seed_planner: SeedPlanner | None,
-    description: str | None,
-    drop_widths: bool,
+    program: BuildingProgram, index: int, graph: RoomGraph, below: Floor | None, seed: int,
+    solver: dict[str, Any], seed_planner: SeedPlanner | None, description: str | None, drop_widths: bool,
 ) -> tuple[Floor, bool]:
     """:func:`solve_building_floor` under one seed: the floor, and whether it may be laid out
     again whole (the offline seeds, mends on, a floor that carries no walls)."""
