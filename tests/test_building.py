@@ -450,8 +450,8 @@ def test_a_floor_laid_out_again_tries_other_seeds_before_giving_up() -> None:
 def test_a_floor_with_rooms_below_their_width_alone_is_laid_out_again_without_one() -> None:
     """A floor whose rooms are all at their minimum area but some below their clear width is laid
     out again without the smallest of them of each type (``RESOLVE_NARROW``): the rooms named
-    in its notes are gone, and without the step (nor the narrow merge after it, which could merge
-    them away) the floor keeps them."""
+    in its notes are gone, and without the step (nor the narrow merge and the dissolve after it,
+    which could merge or drop them) the floor keeps them."""
     from mansion.building import steps
 
     for seed in range(12):
@@ -471,6 +471,7 @@ def test_a_floor_with_rooms_below_their_width_alone_is_laid_out_again_without_on
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "RESOLVE_NARROW", False)
         mp.setattr(steps, "MERGE_NARROW", False)
+        mp.setattr(steps, "DISSOLVE", False)
         kept = _hospital(seed).floors[floor.index]
     assert not any(_is_left_out(n) for n in kept.relaxations)
     assert set(gone) <= {n.id for n in kept.graph.nodes}
