@@ -3,6 +3,8 @@ crash, failures recorded without stopping the others, the Ray engine, the comman
 
 from __future__ import annotations
 
+import dataclasses
+
 import json
 import os
 from collections import Counter
@@ -170,6 +172,18 @@ def test_settings_of_a_dataset_cannot_change_on_resume(two_workers: Path) -> Non
     other = DatasetSettings.parse(floors="2-2", seed=26, max_floor_area=300, validate=False)
     with pytest.raises(InvalidInputError, match="seed"):
         make_dataset(two_workers, N, other)
+    # relayouts decide the buildings too: a dataset made without them does not resume with them
+    relaid = dataclasses.replace(SMALL, relayouts=1)
+    with pytest.raises(InvalidInputError, match="relayouts"):
+        make_dataset(two_workers, N, relaid)
+
+
+def test_relayouts_reach_every_building_and_are_recorded_only_when_asked_for() -> None:
+    assert "relayouts" not in SMALL.to_dict()
+    relaid = dataclasses.replace(SMALL, relayouts=2)
+    assert relaid.to_dict()["relayouts"] == 2 and relaid.job().relayouts == 2
+    with pytest.raises(InvalidInputError, match="relayouts"):
+        DatasetSettings.parse(relayouts=6)
 
 
 @pytest.mark.slow  # about 40 s on the shared machine: Ray starts in 10-15 s

@@ -46,6 +46,7 @@ class JobSettings:
     max_floor_area: float = 500.0
     pictures: bool = False
     validate: bool = True
+    relayouts: int = 0
 
 
 def warm_up() -> None:
@@ -143,7 +144,7 @@ def _build(spec: BuildingSpec, settings: JobSettings, stage: Path, clock: _Clock
 
     building = generate_building(
         spec.description, floors=spec.floors, building_type=spec.building_type, seed=spec.seed,
-        max_floor_area=settings.max_floor_area, progress=progress,
+        max_floor_area=settings.max_floor_area, relayouts=settings.relayouts, progress=progress,
     )
     clock.lap("checks")
     scenes = build_scenes(building, objects=True)

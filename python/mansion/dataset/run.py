@@ -42,28 +42,40 @@ class DatasetSettings:
     seed: int = 0
     pictures: bool = False
     validate: bool = True
+    #: :func:`mansion.generate_building`'s ``relayouts`` for every building.
+    relayouts: int = 0
 
     @classmethod
     def parse(
         cls, *, mix: str = DEFAULT_MIX, floors: str = "2-10",
         max_floor_area: float = DEFAULT_MAX_FLOOR_AREA, seed: int = 0, pictures: bool = False,
-        validate: bool = True,
+        validate: bool = True, relayouts: int = 0,
     ) -> DatasetSettings:
         if not 20 <= max_floor_area <= DEFAULT_MAX_FLOOR_AREA * 4:
             raise InvalidInputError(f"max floor area must be within 20-2000 m², got {max_floor_area:g}")
         if seed < 0:
             raise InvalidInputError(f"seed must be >= 0, got {seed}")
-        return cls(parse_mix(mix), parse_floors(floors), float(max_floor_area), seed, pictures, validate)
+        from mansion.building.generate import MAX_RELAYOUTS
+
+        if not 0 <= relayouts <= MAX_RELAYOUTS:
+            raise InvalidInputError(f"relayouts must be within 0-{MAX_RELAYOUTS}, got {relayouts}")
+        return cls(
+            parse_mix(mix), parse_floors(floors), float(max_floor_area), seed, pictures, validate, relayouts,
+        )
 
     def to_dict(self) -> dict[str, Any]:
-        return {
+        out = {
             "mix": {k: round(v, 6) for k, v in self.mix.items()}, "floors": list(self.floors),
             "max_floor_area": self.max_floor_area, "seed": self.seed, "pictures": self.pictures,
             "validate": self.validate,
         }
+        # written only when asked for, so datasets made before the option resume as they were
+        if self.relayouts:
+            out["relayouts"] = self.relayouts
+        return out
 
     def job(self) -> JobSettings:
-        return JobSettings(self.max_floor_area, self.pictures, self.validate)
+        return JobSettings(self.max_floor_area, self.pictures, self.validate, self.relayouts)
 
 
 def dataset_specs(settings: DatasetSettings, n: int) -> list[BuildingSpec]:
