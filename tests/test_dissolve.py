@@ -111,6 +111,26 @@ def test_a_room_the_program_cannot_spare_takes_the_floor_of_one_beside_it_that_i
     assert shared.room("board_room").area >= 20.0
 
 
+def test_a_room_that_took_a_dissolved_rooms_floor_and_came_out_at_its_width_stays() -> None:
+    # two guest rooms too narrow side by side (2.5 m and 2 m of their 3.3 m): the smaller goes
+    # first, into the other, which then is 4.5 m wide and is not dissolved in its turn
+    picture = "\n".join(["AAAAABBBBCCCCCCCCCC"] * 12 + ["D" * 19] * 4)
+    names = {
+        "D": ("corridor", "main", "corridor", 4.0),
+        "A": ("guest_room_1", "Entities", "guest_room", 14.0),
+        "B": ("guest_room_2", "Entities", "guest_room", 10.0),
+        "C": ("guest_room_3", "Entities", "guest_room", 16.0),
+    }
+    edges = [("corridor", names[k][0]) for k in "ABC"]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    unfit = narrow(layout, graph)
+    assert set(unfit) == {"guest_room_1", "guest_room_2"}
+    shared, fewer, notes = dissolve_unfit_rooms(layout, graph, unfit, "hotel")
+    assert notes == [f"guest_room_2 dropped, its floor shared by guest_room_1 (guest_room_2 {NARROW_WHY})"]
+    assert shared.room("guest_room_1").area == 27.0
+    assert narrow_rooms(shared.rooms, "hotel") == set()
+
+
 @pytest.mark.parametrize("why", ["asked", "last of its type", "circulation only"])
 def test_a_room_the_program_cannot_spare_or_no_room_may_take_stays(why: str) -> None:
     names, keep = dict(NAMES), ()

@@ -79,8 +79,13 @@ def dissolve_unfit_rooms(
     kept = frozenset(keep)
     notes: list[str] = []
     rooms = {r.id: r for r in layout.rooms}
+    grew: set[str] = set()
     for room in sorted((r for r in unfit if r in rooms), key=lambda r: (rooms[r].area, r)):
-        if room not in {n.id for n in graph.nodes}:
+        nodes = {n.id: n for n in graph.nodes}
+        if room not in nodes:
+            continue
+        # a room that took a dissolved room's floor may have come out at its width and area
+        if room in grew and _fit(layout, nodes[room], building_type):
             continue
         found = _best_dissolve(layout, graph, room, building_type, kept, min_contact, same_region)
         # a room the program cannot spare (the floor's only music room, a board room) may take
@@ -94,10 +99,18 @@ def dissolve_unfit_rooms(
         if found is None:
             continue
         layout, graph, gone, takers = found
+        grew |= set(takers)
         also = f" with {', '.join(gone[1:])}" if len(gone) > 1 else ""
         why = f"{room} {unfit[room]}"
         notes.append(f"{gone[0]} dropped{also}, its floor shared by {', '.join(takers)} ({why})")
     return layout, graph, notes
+
+
+def _fit(layout: FloorLayout, node: RoomNode, building_type: str | None) -> bool:
+    """Whether room ``node`` is at its clear width and minimum area, with a usable square."""
+    grid = layout.grid
+    mask = grid.array() == grid.ids.index(node.id)
+    return _cured(mask, node, {node.id: layout.room(node.id)}, building_type, grid.cell_size)
 
 
 def _beside(layout: FloorLayout, room: str) -> list[str]:
@@ -148,6 +161,8 @@ def _best_dissolve(
     way to dissolve ``room``, or None when none passes the module's rules. ``cure``: a room that
     must be among the takers and come out at its width and minimum area."""
     nodes = {n.id: n for n in graph.nodes}
+    if room not in nodes:
+        return None
     parent = cut_parents(graph)
     if not may_spare(nodes[room], graph, parent, keep):
         return None
@@ -235,10 +250,11 @@ def _best_dissolve(
 
 
 def _cured(mask: np.ndarray, node: RoomNode, rooms: dict, building_type: str | None, cell: float) -> bool:
-    """Whether the room ``node`` holding the cells ``mask`` is at its width and minimum area."""
+    """Whether the room ``node`` holding the cells ``mask`` is at its width and minimum area,
+    with a usable square."""
     found = mask_defects(mask, rooms[node.id].room_type, building_type, cell)
     least = node.min_area if node.min_area is not None else room_design(node.room_type).min_area
-    return "narrow" not in found and float(mask.sum()) * cell * cell + EPS >= least
+    return not found & {"narrow", "unusable"} and float(mask.sum()) * cell * cell + EPS >= least
 
 
 def _judged(
