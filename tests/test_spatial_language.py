@@ -1270,11 +1270,11 @@ def test_when_nothing_else_lays_a_plan_out_the_rooms_are_put_on_a_ring(monkeypat
         solve_from_text(plan, text, never, heuristic, lambda s, k: never(s))
 
 
-def test_every_seed_set_is_solved_under_two_random_seeds_and_the_best_regrown(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_every_seed_set_is_solved_under_three_random_seeds_and_the_best_regrown(monkeypatch: pytest.MonkeyPatch) -> None:
     from mansion.eval.t2d import T2DPlan
     from mansion.eval.text_placement import REFINE_GROWN, SOLVE_KINDS, SOLVER_SEEDS, solve_from_text
 
-    assert SOLVER_SEEDS == 2 and SOLVE_KINDS[REFINE_GROWN][1] == "longest"
+    assert SOLVER_SEEDS == 3 and SOLVE_KINDS[REFINE_GROWN][1] == "longest"
     plan = T2DPlan.model_validate(make_plan(3))
     calls: list[tuple[int, dict]] = []
 
@@ -1291,9 +1291,9 @@ def test_every_seed_set_is_solved_under_two_random_seeds_and_the_best_regrown(mo
 
     monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
     solve_from_text(plan, "The kitchen is in the north. The bathroom is in the southwest corner.", solve, None, reseed)
-    # the seed sets read from the text, each under both random seeds and never under the third
+    # the seed sets read from the text, each under all three random seeds (and kinds of solve)
     read = [[s for k, s in calls if k == o and "room" not in s] for o in (0, 1, 2)]
-    assert len(read[0]) >= 2 and read[0] == read[1] and read[2] == []
+    assert len(read[0]) >= 2 and read[0] == read[1] == read[2]
     # the stand-in layout's own rooms are laid out again once more, under the random seed that
     # laid it out (the first) and under the longest-side growth
     again = [k for k, s in calls if "room" in s]
