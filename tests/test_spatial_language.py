@@ -567,34 +567,38 @@ def test_text_seeds_are_solved_without_holding_rooms_to_them(text_plans: Path) -
     assert evaluate_floorplans(text_plans, workers=1, limit=1).weights == EnergyWeights()
 
 
-def test_the_solves_under_the_second_random_seed_use_the_shaped_energy(
+def test_the_solves_under_the_other_random_seeds_use_the_shaped_energy_and_the_longest_side_growth(
     text_plans: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     from mansion.eval import floorplan
-    from mansion.eval.text_placement import TEXT_ENERGY, TEXT_ENERGY_SHAPED, text_energy
-    from mansion.floorplan import EnergyWeights
+    from mansion.eval.text_placement import TEXT_ENERGY, TEXT_ENERGY_SHAPED, text_energy, text_settings
+    from mansion.floorplan import EnergyWeights, SolverSettings
 
     # walls, filled boxes and elongation count more than in the text setting's energy
     assert TEXT_ENERGY_SHAPED.wall > TEXT_ENERGY.wall and TEXT_ENERGY_SHAPED.rect > TEXT_ENERGY.rect
     assert TEXT_ENERGY_SHAPED.aspect > TEXT_ENERGY.aspect and TEXT_ENERGY_SHAPED.drift == 0.0
-    assert [text_energy(k, TEXT_ENERGY) for k in range(4)] == [TEXT_ENERGY, TEXT_ENERGY_SHAPED] * 2
-    # weights given are used as given, under every random seed
+    assert [text_energy(k, TEXT_ENERGY) for k in range(6)] == [TEXT_ENERGY, TEXT_ENERGY_SHAPED, TEXT_ENERGY_SHAPED] * 2
+    # the third kind of solve grows each room on its longest free side, the others balanced
+    assert [text_settings(k, SolverSettings()).growth for k in range(6)] == ["balanced", "balanced", "longest"] * 2
+    # weights and settings given are used as given, under every random seed
     given_w = EnergyWeights()
     assert [text_energy(k, given_w) for k in range(4)] == [given_w] * 4
+    given_s = SolverSettings(k=4.0)
+    assert [text_settings(k, given_s) for k in range(4)] == [given_s] * 4
 
-    used: list[tuple[int, EnergyWeights]] = []
+    used: list[tuple[int, EnergyWeights, str]] = []
     solve = floorplan.solve_plan
 
-    def recording(plan, *, rng_seed=0, weights=None, **kw):
-        used.append((rng_seed, weights))
-        return solve(plan, rng_seed=rng_seed, weights=weights, **kw)
+    def recording(plan, *, rng_seed=0, weights=None, settings=None, **kw):
+        used.append((rng_seed, weights, settings.growth))
+        return solve(plan, rng_seed=rng_seed, weights=weights, settings=settings, **kw)
 
     monkeypatch.setattr(floorplan, "solve_plan", recording)
     evaluate_floorplans(text_plans, seeds="text", workers=1, limit=1, rng_seed=4)
-    odd = [w for s, w in used if s % 2 == 1]
-    even = [w for s, w in used if s % 2 == 0]
-    assert odd and all(w == TEXT_ENERGY_SHAPED for w in odd)
-    assert even and all(w == TEXT_ENERGY for w in even)
+    kinds = {(s - 4) % 3: set() for s, _, _ in used}
+    for s, w, g in used:
+        kinds[(s - 4) % 3].add((w == TEXT_ENERGY_SHAPED, w == TEXT_ENERGY, g))
+    assert kinds == {0: {(False, True, "balanced")}, 1: {(True, False, "balanced")}, 2: {(True, False, "longest")}}
 
 
 def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -1266,33 +1270,46 @@ def test_when_nothing_else_lays_a_plan_out_the_rooms_are_put_on_a_ring(monkeypat
         solve_from_text(plan, text, never, heuristic, lambda s, k: never(s))
 
 
-def test_every_seed_set_is_solved_under_two_random_seeds_of_the_solver(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_every_seed_set_is_solved_under_three_random_seeds_and_the_best_regrown(monkeypatch: pytest.MonkeyPatch) -> None:
     from mansion.eval.t2d import T2DPlan
-    from mansion.eval.text_placement import SOLVER_SEEDS, solve_from_text
+    from mansion.eval.text_placement import REFINE_GROWN, SOLVE_KINDS, SOLVER_SEEDS, solve_from_text
 
-    assert SOLVER_SEEDS == 2
+    assert SOLVER_SEEDS == 3 and SOLVE_KINDS[REFINE_GROWN][1] == "longest"
     plan = T2DPlan.model_validate(make_plan(3))
-    first: list[dict] = []
-    second: list[dict] = []
+    calls: list[tuple[int, dict]] = []
 
     class _Layout:
         grid = _Grid(np.zeros((2, 2), dtype=int), ["room"])
 
     def solve(seeds):
-        first.append(seeds)
+        calls.append((0, seeds))
         return np.zeros((64, 64), dtype=int), _Layout()
 
     def reseed(seeds, k):
-        assert k == 1
-        second.append(seeds)
+        calls.append((k, seeds))
         return np.zeros((64, 64), dtype=int), _Layout()
 
     monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
     solve_from_text(plan, "The kitchen is in the north. The bathroom is in the southwest corner.", solve, None, reseed)
-    # the seed sets read from the text, each under both; the stand-in layout's own rooms are laid
-    # out again once more, under the random seed that laid it out
-    read = [s for s in first if "room" not in s]
-    assert len(read) >= 2 and read == [s for s in second if "room" not in s]
+    # the seed sets read from the text, each under all three random seeds (and kinds of solve)
+    read = [[s for k, s in calls if k == o and "room" not in s] for o in (0, 1, 2)]
+    assert len(read[0]) >= 2 and read[0] == read[1] == read[2]
+    # the stand-in layout's own rooms are laid out again once more, under the random seed that
+    # laid it out (the first) and under the longest-side growth
+    again = [k for k, s in calls if "room" in s]
+    assert again == [0, REFINE_GROWN]
+
+
+def test_a_layout_laid_out_again_is_regrown_only_when_another_kind_laid_it_out() -> None:
+    from mansion.eval.text_placement import REFINE_GROWN, _refine_offsets
+
+    assert _refine_offsets(0, True) == [0, REFINE_GROWN]
+    assert _refine_offsets(1, True) == [1, REFINE_GROWN]
+    # already grown on its longest sides (the kind recurs every len(SOLVE_KINDS) offsets)
+    assert _refine_offsets(REFINE_GROWN, True) == [REFINE_GROWN]
+    assert _refine_offsets(REFINE_GROWN + 3, True) == [REFINE_GROWN + 3]
+    # a caller that cannot solve under other random seeds lays it out once
+    assert _refine_offsets(0, False) == [0]
 
 
 def test_rooms_the_text_does_not_place_are_seeded_amid_their_neighbours_in_half_the_point_solves() -> None:

@@ -148,15 +148,17 @@ def _score_one(job: Job) -> tuple[PlanResult, Any]:
         if isinstance(seeds, str):  # the seed planner failed on this plan: a failure, scored 0
             raise MansionError(seeds)
         if isinstance(seeds, FromText):
-            from mansion.eval.text_placement import solve_from_text, text_energy
+            from mansion.eval.text_placement import solve_from_text, text_energy, text_settings
 
             seeds, pred, layout = solve_from_text(
                 plan, seeds.description,
                 lambda s: solve_plan(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed, seeds=s),
                 lambda: _heuristic_solve(plan, mode=mode, weights=weights, settings=settings, rng_seed=rng_seed),
-                # the solves under the solver's other random seeds: odd ones under the shaped energy
+                # the solves under the solver's other random seeds, each kind of
+                # text_placement.SOLVE_KINDS in turn (the shaped energy, the longest-side growth)
                 lambda s, k: solve_plan(
-                    plan, mode=mode, weights=text_energy(k, weights), settings=settings, rng_seed=rng_seed + k, seeds=s
+                    plan, mode=mode, weights=text_energy(k, weights), settings=text_settings(k, settings),
+                    rng_seed=rng_seed + k, seeds=s,
                 ),
             )
             heuristic = seeds is None
