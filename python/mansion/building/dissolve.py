@@ -51,7 +51,7 @@ from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import (
     DOOR_WIDTH, grid_adjacencies, mask_defects, may_receive, may_spare, rooms_from_grid,
 )
-from mansion.building.recut import _connected, _passable, _walls
+from mansion.building.recut import _connected, _kept_walls, _passable, _walls, edge_grown
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import SANITARY_TYPES, design_key, room_design
@@ -110,22 +110,12 @@ def _fit(layout: FloorLayout, node: RoomNode, building_type: str | None) -> bool
     """Whether room ``node`` is at its clear width and minimum area, with a usable square."""
     grid = layout.grid
     mask = grid.array() == grid.ids.index(node.id)
-    return _cured(mask, node, {node.id: layout.room(node.id)}, building_type, grid.cell_size)
+    return _cured(mask, node, layout.room(node.id).room_type, building_type, grid.cell_size)
 
 
 def _beside(layout: FloorLayout, room: str) -> list[str]:
     """The rooms sharing a wall with ``room``, by id."""
     return sorted(a.b if a.a == room else a.a for a in layout.adjacencies if room in (a.a, a.b))
-
-
-def _grow(mask: np.ndarray) -> np.ndarray:
-    """``mask`` and its cells' edge neighbours."""
-    out = mask.copy()
-    out[1:] |= mask[:-1]
-    out[:-1] |= mask[1:]
-    out[:, 1:] |= mask[:, :-1]
-    out[:, :-1] |= mask[:, 1:]
-    return out
 
 
 def _grown(labels: np.ndarray, hole: np.ndarray, takers: dict[int, np.ndarray]) -> np.ndarray | None:
@@ -137,7 +127,7 @@ def _grown(labels: np.ndarray, hole: np.ndarray, takers: dict[int, np.ndarray]) 
     while left.any():
         moved = False
         for k, may in takers.items():
-            front = _grow(new == k) & left & may
+            front = edge_grown(new == k) & left & may
             if front.any():
                 new[front] = k
                 left &= ~front
@@ -186,7 +176,7 @@ def _best_dissolve(
     # the rooms beside the dropped ones that may take floor, each the cells of the dropped rooms
     # it may take: the room's floor goes to its region or its siblings, its ensuite's to theirs
     # (a bathroom's floor to a bathroom)
-    ring = _grow(hole) & ~hole
+    ring = edge_grown(hole) & ~hole
     near = sorted({ids[k] for k in np.unique(labels[ring]) if k >= 0} - set(gone))
     allowed: dict[str, np.ndarray] = {}
     for other in near:
@@ -203,14 +193,10 @@ def _best_dissolve(
     beside = sorted(allowed)
     if not beside or (cure is not None and cure not in beside):
         return None
-    # the relations that must keep their walls: the other rooms' own, and the dropped rooms'
-    # relations with rooms that stay, which pass to whichever taker then has the wall
-    adj = {frozenset((a.a, a.b)): a for a in layout.adjacencies}
-    kept_walls = [
-        (e.source, e.target, a.longest, a.contact)
-        for e in graph.edges if not {e.source, e.target} & set(gone)
-        for a in [adj.get(frozenset((e.source, e.target)))] if a is not None
-    ]
+    # the relations that must keep their walls: the takers' own (no other room's cells move),
+    # and the dropped rooms' relations with rooms that stay, which pass to whichever taker then
+    # has the wall
+    kept_walls = [w for w in _kept_walls(layout, graph, set(beside)) if not {w[0], w[1]} & set(gone)]
     outward = [
         (e, e.target if e.source in gone else e.source)
         for e in graph.edges
@@ -230,7 +216,7 @@ def _best_dissolve(
             if new is None:
                 continue
             judged = _judged(new, ids, cell, takers, before, rooms, building_type)
-            if judged is None or (cure is not None and not _cured(new == ids.index(cure), nodes[cure], rooms, building_type, cell)):
+            if judged is None or (cure is not None and not _cured(new == ids.index(cure), nodes[cure], rooms[cure].room_type, building_type, cell)):
                 continue
             walls = _walls(new, ids, cell, kept_walls, min_contact)
             if walls is None:
@@ -249,10 +235,10 @@ def _best_dissolve(
     return _dissolved_layout(layout, new, gone, took), _dissolved_graph(graph, gone, took, passed), gone, list(takers)
 
 
-def _cured(mask: np.ndarray, node: RoomNode, rooms: dict, building_type: str | None, cell: float) -> bool:
-    """Whether the room ``node`` holding the cells ``mask`` is at its width and minimum area,
-    with a usable square."""
-    found = mask_defects(mask, rooms[node.id].room_type, building_type, cell)
+def _cured(mask: np.ndarray, node: RoomNode, room_type: str, building_type: str | None, cell: float) -> bool:
+    """Whether the room ``node`` (laid out as ``room_type``) holding the cells ``mask`` is at its
+    width and minimum area, with a usable square."""
+    found = mask_defects(mask, room_type, building_type, cell)
     least = node.min_area if node.min_area is not None else room_design(node.room_type).min_area
     return not found & {"narrow", "unusable"} and float(mask.sum()) * cell * cell + EPS >= least
 

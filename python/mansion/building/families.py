@@ -54,7 +54,8 @@ from shapely.geometry import Polygon
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.recut import (
-    _least, _redrawn, _wide_rectangle, area_shares, band_shares, cluster_cells, in_a_row, judged_score,
+    _least, _redrawn, _wide_rectangle, area_shares, band_shares, cluster_cells, edge_grown, in_a_row,
+    judged_score,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
@@ -152,12 +153,7 @@ def touching(layout: FloorLayout, room: str) -> set[str | None]:
     labels = np.pad(layout.grid.array(), 1, constant_values=-1)
     ids = list(layout.grid.ids)
     mask = labels == ids.index(room)
-    ring = np.zeros_like(mask)
-    ring[1:] |= mask[:-1]
-    ring[:-1] |= mask[1:]
-    ring[:, 1:] |= mask[:, :-1]
-    ring[:, :-1] |= mask[:, 1:]
-    return {ids[v] if v >= 0 else None for v in np.unique(labels[ring & ~mask]).tolist()}
+    return {ids[v] if v >= 0 else None for v in np.unique(labels[edge_grown(mask) & ~mask]).tolist()}
 
 
 def _islands(layout: FloorLayout, head: str, members: list[str], parent: dict[str, str]) -> list[str]:

@@ -904,6 +904,17 @@ def _passable(mask: np.ndarray) -> tuple[int, int]:
     return int((mask & ~covered).sum()), len(_core.vectorise(crop))
 
 
+def edge_grown(mask: np.ndarray) -> np.ndarray:
+    """``mask`` and the cells beside its cells (edge neighbours): the ring round a room is this
+    less the room."""
+    out = mask.copy()
+    out[1:] |= mask[:-1]
+    out[:-1] |= mask[1:]
+    out[:, 1:] |= mask[:, :-1]
+    out[:, :-1] |= mask[:, 1:]
+    return out
+
+
 def _squares(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(the 2 × 2 blocks of ``mask`` by their lower-left cells, the cells they cover): the 1 m
     squares of a room on the 0.5 m grid."""
