@@ -191,6 +191,27 @@ def test_a_floor_left_with_rooms_below_their_width_is_laid_out_again_when_asked(
     ).model_dump_json() == again.model_dump_json()
 
 
+def test_a_floor_that_carries_walls_is_laid_out_again_and_the_floors_above_follow_it() -> None:
+    from mansion.building.load_bearing import carry_walls
+    from mansion.building.steps import floor_footprint
+
+    # apartment block 116: its ground floor keeps a flat's living bay below its width; the block's
+    # walls carry the floors above, and the floor is laid out again before they are solved
+    kind, floors, text = bench_case(116)
+    once = generate_building(text, building_type=kind, floors=floors, seed=116)
+    again = generate_building(text, building_type=kind, floors=floors, seed=116, relayouts=1)
+    assert again.program.load_bearing_walls
+    assert narrow_rooms(once.floors[0].layout.rooms, kind)
+    assert all(not narrow_rooms(f.layout.rooms, kind) for f in again.floors)
+    assert again.floors[0].carried_walls != once.floors[0].carried_walls
+    # every floor above follows the walls of the floor kept below it
+    for index in range(1, len(again.floors)):
+        above, below = again.floors[index], again.floors[index - 1]
+        if above.copy_of is None:
+            walls = carry_walls(below.carried_walls, floor_footprint(again.program, index))
+            assert walls and above.footprint.fixed_walls == walls
+
+
 @pytest.mark.parametrize("bad", [-1, 6, True, 1.0, "1"])
 def test_relayouts_out_of_range_is_a_typed_error(bad: object) -> None:
     from mansion.exceptions import InvalidInputError

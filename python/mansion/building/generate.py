@@ -121,9 +121,9 @@ def generate_building(
             then keep slivers and one-cell necks).
         relayouts: times a floor the mends leave with rooms below their minimum area or width
             is laid out again whole under a seed of its own, keeping the layout with fewer such
-            rooms (offline planner, floors that carry no walls; see
+            rooms (offline planner; see
             :func:`mansion.building.steps.solve_building_floor`). 0 (the default) for time; 1
-            cut the offline hundred's rooms below their width from 46 to 30 for about 1.15
+            cut the offline hundred's rooms below their width from 46 to 28 for about 1.2
             times the generation time.
         progress: called as ``progress(message, done, total)`` as floors are solved.
 

@@ -570,9 +570,10 @@ def solve_building_floor(
 
     ``relayouts``: times a floor the mends leave with rooms below their minimum area or clear
     width is laid out again whole, mends and all, under a seed of its own with a sixth of the
-    candidates; the layout with fewer such rooms is kept (offline seeds, floors that carry no
-    walls). Off by default for time: one relayout cut the offline hundred's rooms below their
-    width from 46 to 30 for 1.65 times the generation time of the passes off, against 1.45.
+    candidates; the layout with fewer such rooms is kept (offline seeds; a floor that carries
+    walls too, before the floors above follow it). Off by default for time: one relayout cut the
+    offline hundred's rooms below their width from 46 to 28 for 1.7 times the generation time of
+    the passes off, against 1.45.
     """
     floor, again = _solve_building_floor(
         program, index, graph, below, seed, solver, seed_planner, description, drop_widths,
@@ -609,7 +610,7 @@ def _solve_building_floor(
     solver: dict[str, Any], seed_planner: SeedPlanner | None, description: str | None, drop_widths: bool,
 ) -> tuple[Floor, bool]:
     """:func:`solve_building_floor` under one seed: the floor, and whether it may be laid out
-    again whole (the offline seeds, mends on, a floor that carries no walls)."""
+    again whole (the offline seeds, mends on)."""
     floor_program = program.floor_program(index)
     fp = floor_footprint(program, index)
     planner = seed_planner
@@ -770,7 +771,12 @@ def _solve_building_floor(
         carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
         position_words=words,
     )
-    return floor, repairs and planner is None and not program.load_bearing_walls
+    # laid out again whole only with the offline seeds (a seed planner, Claude's or the
+    # description's position words, was asked for this graph's rooms). A floor that carries walls
+    # may be too: its first round follows the walls below either way, and the floors above are
+    # solved after it, so they follow the layout kept (seeds 0-99 / 100-199 with one relayout:
+    # below width 30 / 19 -> 28 / 17, below area 3 / 1 -> 2 / 1)
+    return floor, repairs and seed_planner is None and text_planner is None
 
 
 
