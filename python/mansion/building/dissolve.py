@@ -310,7 +310,7 @@ def _dissolved_layout(layout: FloorLayout, new: np.ndarray, gone: list[str], too
     relabelled = np.where(new >= 0, lut[np.maximum(new, 0)], new).astype(np.int32)
     rooms = {r.id: r for r in layout.rooms}
     targets = {t: rooms[t].target_area + area for t, area in took.items()}
-    grid = grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
+    grid = grid.relabelled(relabelled, ids=ids)
     kept = {rid: r for rid, r in rooms.items() if rid not in gone}
     drawn = {r.id: r for r in rooms_from_grid(relabelled, grid, kept, targets)}
     return layout.model_copy(update={

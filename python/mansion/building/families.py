@@ -54,8 +54,8 @@ from shapely.geometry import Polygon
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.recut import (
-    _least, _redrawn, _wide_rectangle, area_shares, band_shares, cluster_cells, edge_grown, in_a_row,
-    judged_score,
+    _least, _redrawn, _wide_rectangle, area_shares, band_columns, band_shares, cluster_cells, edge_grown,
+    in_a_row, judged_score,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
@@ -223,24 +223,27 @@ def _relaid_family(
                     got = band_shares(part, group, least, targets, cell)
                     shares = None if got is None or shares is None else {**shares, **got}
                 # the head keeps what the bands leave, which must hold its minimum
-                if shares is None or float((view & ~band).sum()) * cell * cell + EPS < least[head]:
+                head_cells = view & ~band
+                if shares is None or float(head_cells.sum()) * cell * cell + EPS < least[head]:
                     continue
                 variants = [(order, shares) for order in orders]
                 if len(groups) == 1:
                     variants += _short_rows(band, head, members, orders, least, targets, head_width, cell)
+                columns = [band_columns(part) for part in parts]
                 for order, sizes in variants:
                     turned = turned_labels.copy()
-                    turned[view & ~band] = keys[head]
-                    if not all(in_a_row(turned, part, row, sizes, keys, cell) for part, row in zip(parts, order)):
+                    turned[head_cells] = keys[head]
+                    if not all(
+                        in_a_row(turned, part, row, sizes, keys, cell, cols)
+                        for part, row, cols in zip(parts, order, columns)
+                    ):
                         continue
                     # a room that was at its width must be as wide and as deep as it (fewer
                     # columns or rows of the band hold no square of it): a quick refusal
                     # before the measures
                     if any(
-                        min(
-                            int((turned == keys[m]).any(axis=1).sum()), int((turned == keys[m]).any(axis=0).sum()),
-                        ) * cell + EPS < firm[m]
-                        for m in members if firm[m]
+                        min(int(own.any(axis=1).sum()), int(own.any(axis=0).sum())) * cell + EPS < firm[m]
+                        for m in members if firm[m] for own in [turned == keys[m]]
                     ):
                         continue
                     laid = np.rot90(turned, -turn)

@@ -182,7 +182,7 @@ def _split(
     all_ids = [name.get(rid, rid) for rid in all_ids]
     final = [(name[rid], typ, area) for rid, typ, area in final]
     edges = [e.model_copy(update={"source": name.get(e.source, e.source), "target": name.get(e.target, e.target)}) for e in edges]
-    grid = layout.grid.model_copy(update={"ids": all_ids, "labels": new.tolist()})
+    grid = layout.grid.relabelled(new, ids=all_ids)
     old = dict(rooms)
     for rid, typ, area in final:
         old[rid] = rooms[room].model_copy(update={"id": rid, "room_type": typ, "type": "Entities", "target_area": area})

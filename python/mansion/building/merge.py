@@ -478,7 +478,7 @@ def _merged_layout(layout: FloorLayout, gone: str, stays: str) -> FloorLayout:
     k_gone, k_stays = layout.grid.ids.index(gone), layout.grid.ids.index(stays)
     relabelled = np.where(labels == k_gone, k_stays, labels)
     relabelled = np.where(relabelled > k_gone, relabelled - 1, relabelled).astype(np.int32)
-    grid = layout.grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
+    grid = layout.grid.relabelled(relabelled, ids=ids)
     targets = {stays: rooms[stays].target_area + rooms[gone].target_area}
     return layout.model_copy(update={
         "rooms": rooms_from_grid(relabelled, grid, rooms, targets),
