@@ -49,10 +49,10 @@ import itertools
 from collections.abc import Iterable
 
 import numpy as np
-from shapely.geometry import Polygon
 
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
+from mansion.building.outlines import shape_measure
 from mansion.building.recut import (
     _least, _redrawn, _wide_rectangle, area_shares, band_columns, band_shares, cluster_cells, edge_grown,
     in_a_row, judged_score,
@@ -60,7 +60,7 @@ from mansion.building.recut import (
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
-from mansion.models.room_shape import EPS, mostly_narrower
+from mansion.models.room_shape import EPS
 
 __all__ = ["ALL_ORDERS", "MAX_FAMILY", "relay_families", "touching"]
 
@@ -100,12 +100,14 @@ def relay_families(
         if (room.id not in parent and room.id != graph.hub.id) or _wide_rectangle(room, building_type):
             continue
         # room_shape's measure, cached for the outlines the earlier mends measured already
-        if mostly_narrower(Polygon(room.polygon, room.holes), needed_width(room.room_type, building_type)):
+        if shape_measure(room, ("narrow", needed_width(room.room_type, building_type))):
             heads.update((room.id, parent.get(room.id, room.id)))
+    read = None
     for head in sorted(heads):
-        # the cut tree as it stands: a family laid out without a room has one room fewer
-        parent = cut_parents(graph)
-        nodes = {n.id: n for n in graph.nodes}
+        # the cut tree as it stands: a family laid out without a room has one room fewer (read
+        # again only then: only a drop changes the graph)
+        if graph is not read:
+            parent, nodes, read = cut_parents(graph), {n.id: n for n in graph.nodes}, graph
         if head not in nodes or nodes[head].is_core:
             continue
         members = sorted(r for r, up in parent.items() if up == head)

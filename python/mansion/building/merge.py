@@ -65,8 +65,8 @@ from mansion.models.room_design import ELONGATED_ASPECT, SANITARY_TYPES, design_
 from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, box_aspect, fits_square, mostly_narrower
 
 __all__ = [
-    "DOOR_WIDTH", "USABLE_SIDE", "grid_adjacencies", "mask_defects", "merge_unfit_rooms", "rooms_from_grid",
-    "shape_defects", "square_cover",
+    "DOOR_WIDTH", "USABLE_SIDE", "block_side", "grid_adjacencies", "mask_defects", "merge_unfit_rooms",
+    "rooms_from_grid", "shape_defects", "square_cover",
 ]
 
 #: Shared wall (m) two rooms need to be merged: a door's width, as ``mansion eval realism`` asks
@@ -113,8 +113,8 @@ def mask_defects(mask: np.ndarray, room_type: str, building_type: str | None, ce
     cells' box). Cached by the cells' shape: the mends judge the same room's cells again and
     again in the candidates they weigh (four in five measures of the hundred's mends are
     repeats)."""
-    rr, cc = np.nonzero(mask)
-    crop = mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1]
+    rr, cc = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
+    crop = mask[rr[0]:rr[-1] + 1, cc[0]:cc[-1] + 1]
     key = (crop.shape, np.packbits(crop).tobytes(), room_type, building_type, cell)
     found = _MEASURED.get(key)
     if found is None:
@@ -140,12 +140,13 @@ def _defects_of(crop: np.ndarray, room_type: str, building_type: str | None, cel
     out: set[str] = set()
     if not design.circulation and max(h, w) > ELONGATED_ASPECT * min(h, w):
         out.add("elongated")
-    # inclusive: parts exactly 1 m wide are slivers
-    usable = int(square_cover(crop, USABLE_SIDE + 2 * EPS, cell).sum())
+    # inclusive: parts exactly 1 m wide are slivers (the cells square_cover would give, counted
+    # by the core)
+    usable = int(_core.covered_cells(crop, block_side(USABLE_SIDE + 2 * EPS, cell)))
     if total - usable > TOLERANCE * total + SHARE_EPS * total:
         out.add("sliver")
     need = needed_width(room_type, building_type)
-    if total - int(square_cover(crop, need - 2 * EPS, cell).sum()) > TOLERANCE * total + SHARE_EPS * total:
+    if total - int(_core.covered_cells(crop, block_side(need - 2 * EPS, cell))) > TOLERANCE * total + SHARE_EPS * total:
         out.add("narrow")
     if usable == 0:
         out.add("unusable")
@@ -159,7 +160,7 @@ def square_cover(mask: np.ndarray, width: float, cell: float) -> np.ndarray:
     exactly the blocks that do (a square off the grid spans whole cells of the shape on every row
     and column it touches)."""
     h, w = mask.shape
-    m = int(np.ceil(width / cell - 1e-9))
+    m = block_side(width, cell)
     if m <= 1:
         return mask.copy()
     if m > h or m > w:
@@ -177,6 +178,11 @@ def square_cover(mask: np.ndarray, width: float, cell: float) -> np.ndarray:
     stamp[:bh, m:m + bw] -= fits
     stamp[m:m + bh, m:m + bw] += fits
     return np.cumsum(np.cumsum(stamp, axis=0), axis=1)[:h, :w] > 0
+
+
+def block_side(width: float, cell: float) -> int:
+    """Cells a side of the block a square ``width`` metres wide needs (:func:`square_cover`)."""
+    return int(np.ceil(width / cell - 1e-9))
 
 
 def rooms_from_grid(

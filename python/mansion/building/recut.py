@@ -64,19 +64,20 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable
+from typing import overload
 
 import numpy as np
-from shapely.geometry import Polygon
 
 from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
+from mansion.building.outlines import outline, shape_measure
 from mansion.building.merge import (
     DOOR_WIDTH, USABLE_SIDE, grid_adjacencies, mask_defects, rooms_from_grid, shape_defects, square_cover,
 )
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
-from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, mostly_narrower
+from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
 __all__ = ["hand_off_strips", "recut_narrow_rooms", "recut_unfit_rooms", "widen_passages"]
 
@@ -177,7 +178,7 @@ def recut_narrow_rooms(
         r = rooms[rid]
         if _wide_rectangle(r, building_type):
             return False
-        return mostly_narrower(Polygon(r.polygon, r.holes), needed_width(r.room_type, building_type))
+        return bool(shape_measure(r, ("narrow", needed_width(r.room_type, building_type))))
 
     children: dict[str, list[str]] = {}
     for child, head in sorted(parent.items()):
@@ -607,8 +608,7 @@ def _best_recut(
         hi = int(target * NARROW_SPAN[1] / (cell * cell))
     # the relations whose shared walls must hold, with what they had
     keep = _kept_walls(layout, graph, {room, up})
-    old_room = Polygon(rooms[room].polygon, rooms[room].holes)
-    old_up = Polygon(rooms[up].polygon, rooms[up].holes)
+    old_room, old_up = outline(rooms[room]), outline(rooms[up])
     room_defects = shape_defects(old_room, node.room_type, building_type)
     up_defects = shape_defects(old_up, rooms[up].room_type, building_type)
     up_node = next(n for n in graph.nodes if n.id == up)
@@ -667,30 +667,10 @@ def _windows(
     """(h, w, row, column, cells of ``own`` it holds), one row of an int64 array each, of every
     h × w rectangle of the grid's cells lying inside ``region``, by its lower-left cell: both
     sides at least ``side`` cells, ``lo`` to ``hi`` cells, its long side at most ``stretch`` times
-    its short one."""
+    its short one. Found by the core (prefix sums of the two masks): a recut weighs thousands."""
     rr, cc = np.nonzero(region)
-    r0, r1, c0, c1 = rr.min(), rr.max() + 1, cc.min(), cc.max() + 1
-    # prefix sums of the region: a rectangle lies inside it when it holds h * w region cells
-    inside = np.zeros((region.shape[0] + 1, region.shape[1] + 1), dtype=np.int64)
-    inside[1:, 1:] = np.cumsum(np.cumsum(region, axis=0), axis=1)
-    # and of the room's own cells: how many of them a rectangle keeps
-    mine = np.zeros_like(inside)
-    mine[1:, 1:] = np.cumsum(np.cumsum(own, axis=0), axis=1)
-    out: list[np.ndarray] = []
-    for h in range(side, r1 - r0 + 1):
-        for w in range(side, c1 - c0 + 1):
-            if not lo <= h * w <= hi or max(h, w) > stretch * min(h, w):
-                continue
-            full = (
-                inside[r0 + h:r1 + 1, c0 + w:c1 + 1] - inside[r0:r1 + 1 - h, c0 + w:c1 + 1]
-                - inside[r0 + h:r1 + 1, c0:c1 + 1 - w] + inside[r0:r1 + 1 - h, c0:c1 + 1 - w]
-            ) == h * w
-            y, x = np.nonzero(full)
-            if len(y):
-                y, x = y + r0, x + c0
-                kept = mine[y + h, x + w] - mine[y, x + w] - mine[y + h, x] + mine[y, x]
-                out.append(np.stack([np.full_like(y, h), np.full_like(y, w), y, x, kept], axis=1))
-    return np.concatenate(out).astype(np.int64) if out else np.zeros((0, 5), dtype=np.int64)
+    box = (int(rr.min()), int(rr.max()) + 1, int(cc.min()), int(cc.max()) + 1)
+    return _core.mask_windows(region, own, side, lo, hi, float(stretch), box)
 
 
 def _rest_holds(
@@ -755,7 +735,7 @@ def _best_suite(
     inner_hi = int(max(rooms[inner].area, least_inner) * INNER_GROWTH / (cell * cell))
     inner_target = max(rooms[inner].area, least_inner) / (cell * cell)
     before = {
-        rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
+        rid: shape_defects(outline(rooms[rid]), rooms[rid].room_type, building_type)
         for rid in (room, up)
     }
     allowed = before[room] - {"narrow"}
@@ -897,6 +877,12 @@ class Walls:
         found = self._pairs.get((a, b) if a < b else (b, a))
         return None if found is None else (found[0] * self._cell, found[1] * self._cell)
 
+    @overload
+    def get(self, key: frozenset[str]) -> tuple[float, float] | None: ...
+
+    @overload
+    def get(self, key: frozenset[str], default: tuple[float, float]) -> tuple[float, float]: ...
+
     def get(self, key: frozenset[str], default: tuple[float, float] | None = None) -> tuple[float, float] | None:
         """As ``dict.get`` for ``key``, a pair of room ids."""
         found = self.pair(*key) if len(key) == 2 else None
@@ -929,16 +915,10 @@ def _passable(mask: np.ndarray) -> tuple[int, int]:
     joined only where they overlap by a 1 m side): a part one cell (0.5 m) wide is a passage the
     agent cannot take (``mansion validate``'s navigation), and so is a neck where two squares
     meet at one cell, a staircase of the grid the squares' union would call connected (building
-    21 of the hundred: a corridor joined to its lift that way, which the navigation bench found)."""
-    # measured on the mask's box (the same counts, the mask often a floor's whole grid)
-    mask = mask[_box_round(mask, 0)]
-    window, covered = _squares(mask)
-    if not window.any():
-        return int(mask.sum()), 0
-    # the squares by their lower-left cells: two whose cells are edge neighbours share a 1 m side
-    rr, cc = np.nonzero(window)
-    crop = np.where(window[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
-    return int((mask & ~covered).sum()), len(_core.vectorise(crop))
+    21 of the hundred: a corridor joined to its lift that way, which the navigation bench found).
+    Counted by the core: the mends ask it of ten thousand candidates on the hundred."""
+    uncovered, pieces = _core.mask_passable(mask)
+    return int(uncovered), int(pieces)
 
 
 def edge_grown(mask: np.ndarray) -> np.ndarray:
@@ -964,23 +944,18 @@ def _squares(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return window, covered
 
 
-def _box_round(mask: np.ndarray, margin: int = 1) -> tuple[slice, slice]:
-    """The box of the True cells of ``mask`` and ``margin`` cells round it, within the grid (the
-    whole grid when there are none)."""
+def _box_round(mask: np.ndarray) -> tuple[slice, slice]:
+    """The box of the True cells of ``mask`` and one cell round it, within the grid (the whole
+    grid when there are none)."""
     rr, cc = np.nonzero(mask.any(axis=1))[0], np.nonzero(mask.any(axis=0))[0]
     if not len(rr):
         return slice(None), slice(None)
-    return (
-        slice(max(int(rr[0]) - margin, 0), int(rr[-1]) + 1 + margin),
-        slice(max(int(cc[0]) - margin, 0), int(cc[-1]) + 1 + margin),
-    )
+    return slice(max(int(rr[0]) - 1, 0), int(rr[-1]) + 2), slice(max(int(cc[0]) - 1, 0), int(cc[-1]) + 2)
 
 
 def _connected(mask: np.ndarray) -> bool:
     """Whether the True cells of ``mask`` form one 4-connected piece (as the core draws rooms)."""
-    rr, cc = np.nonzero(mask)
-    crop = np.where(mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
-    return len(_core.vectorise(crop)) == 1
+    return int(_core.mask_pieces(mask)) == 1
 
 
 #: Rooms a cluster's head serves at most for it to be laid out again (their orders are tried).
@@ -1028,7 +1003,7 @@ def _relaid_cluster(
     rooms = {r.id: r for r in layout.rooms}
     nodes = {n.id: n for n in graph.nodes}
     before = {
-        rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
+        rid: shape_defects(outline(rooms[rid]), rooms[rid].room_type, building_type)
         for rid in cluster
     }
     least = {rid: nodes[rid].min_area or 0.0 for rid in cluster}
