@@ -67,3 +67,15 @@ def test_mask_windows_are_every_rectangle_inside_the_region() -> None:
         found = _core.mask_windows(region, own, side, lo, hi, stretch, (r0, r1, c0, c1))
         assert found.dtype == np.int64 and found.shape[1] == 5
         assert sorted(map(tuple, found.tolist())) == want
+
+
+def test_box_cover_is_the_box_and_the_covered_cells_of_it() -> None:
+    for mask in _masks(300, 5):
+        if not mask.any():
+            assert _core.box_cover(mask, [2]) == (0, 0, 0, [0])
+            continue
+        rr, cc = np.nonzero(mask)
+        crop = mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1]
+        sides = [1, 2, 3, 4]
+        want = (*crop.shape, int(crop.sum()), [_core.covered_cells(crop, m) for m in sides])
+        assert _core.box_cover(np.pad(mask, 2), sides) == want

@@ -6,7 +6,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "adjacencies", "covered_cells", "mask_pieces", "mask_passable", "mask_windows", "grow_candidates", "place_room", "place_rooms"]
+__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "adjacencies", "covered_cells", "box_cover", "mask_pieces", "mask_passable", "mask_windows", "grow_candidates", "place_room", "place_rooms"]
 
 __version__: str
 
@@ -40,6 +40,10 @@ def adjacencies(labels: npt.NDArray[np.int32]) -> list[tuple[int, int, int, int]
 
 def covered_cells(mask: npt.NDArray[np.bool_], m: int) -> int:
     """Cells of a boolean mask that some m x m block of its cells covers."""
+
+def box_cover(mask: npt.NDArray[np.bool_], sides: list[int]) -> tuple[int, int, int, list[int]]:
+    """(rows, columns) of the box of a boolean mask's cells, its cells, and for each of sides the
+    cells some block of that side covers."""
 
 def mask_pieces(mask: npt.NDArray[np.bool_]) -> int:
     """Number of 4-connected pieces of a boolean mask's cells."""

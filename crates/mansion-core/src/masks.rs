@@ -22,6 +22,36 @@ pub fn covered_cells(mask: &[bool], w: usize, h: usize, m: usize) -> usize {
         .count()
 }
 
+/// (rows, columns) of the box of `mask`'s cells, its cells in all, and for each side of `sides`
+/// the cells some block of that side covers ([`covered_cells`] of the box): a room's realism
+/// measures on the grid (issue 14). An empty mask has a box of (0, 0).
+pub fn box_cover(
+    mask: &[bool],
+    w: usize,
+    h: usize,
+    sides: &[usize],
+) -> (usize, usize, usize, Vec<usize>) {
+    let (mut r0, mut r1, mut c0, mut c1) = (h, 0, w, 0);
+    let mut total = 0;
+    for (i, _) in mask.iter().enumerate().filter(|(_, &c)| c) {
+        let (y, x) = (i / w, i % w);
+        (r0, r1, c0, c1) = (r0.min(y), r1.max(y + 1), c0.min(x), c1.max(x + 1));
+        total += 1;
+    }
+    if total == 0 {
+        return (0, 0, 0, vec![0; sides.len()]);
+    }
+    let (bh, bw) = (r1 - r0, c1 - c0);
+    let crop: Vec<bool> = (r0..r1)
+        .flat_map(|y| mask[y * w + c0..y * w + c1].iter().copied())
+        .collect();
+    let covered = sides
+        .iter()
+        .map(|&m| covered_cells(&crop, bw, bh, m))
+        .collect();
+    (bh, bw, total, covered)
+}
+
 /// Number of 4-connected pieces of the cells of `mask` (as [`crate::vectorise::vectorise`] draws
 /// them).
 pub fn pieces(mask: &[bool], w: usize, h: usize) -> usize {
@@ -189,6 +219,16 @@ mod tests {
         assert_eq!(covered_cells(&m, w, h, 3), 9);
         assert_eq!(covered_cells(&m, w, h, 4), 0);
         assert_eq!(covered_cells(&m, w, h, 5), 0);
+    }
+
+    #[test]
+    fn the_box_of_a_room_and_its_squares() {
+        let (m, w, h) = mask(&["......", ".###..", ".###..", ".####.", ".#...."]);
+        assert_eq!(
+            box_cover(&m, w, h, &[1, 2, 3, 4]),
+            (4, 4, 11, vec![11, 9, 9, 0])
+        );
+        assert_eq!(box_cover(&[false; 6], 3, 2, &[2]), (0, 0, 0, vec![0]));
     }
 
     #[test]

@@ -205,6 +205,20 @@ fn covered_cells(py: Python<'_>, mask: PyReadonlyArray2<'_, bool>, m: usize) -> 
     })
 }
 
+/// (rows, columns) of the box of a boolean mask's cells, its cells, and for each of `sides` the
+/// cells some block of that side covers.
+#[pyfunction]
+fn box_cover(
+    py: Python<'_>,
+    mask: PyReadonlyArray2<'_, bool>,
+    sides: Vec<usize>,
+) -> PyResult<(usize, usize, usize, Vec<usize>)> {
+    let (cells, w, h) = mask_cells(&mask);
+    guarded(py, move || {
+        Ok(mansion_core::masks::box_cover(&cells, w, h, &sides))
+    })
+}
+
 /// Number of 4-connected pieces of a boolean mask's cells.
 #[pyfunction]
 fn mask_pieces(py: Python<'_>, mask: PyReadonlyArray2<'_, bool>) -> PyResult<usize> {
@@ -440,6 +454,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(vectorise, m)?)?;
     m.add_function(wrap_pyfunction!(adjacencies, m)?)?;
     m.add_function(wrap_pyfunction!(covered_cells, m)?)?;
+    m.add_function(wrap_pyfunction!(box_cover, m)?)?;
     m.add_function(wrap_pyfunction!(mask_pieces, m)?)?;
     m.add_function(wrap_pyfunction!(mask_passable, m)?)?;
     m.add_function(wrap_pyfunction!(mask_windows, m)?)?;

@@ -54,8 +54,8 @@ from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.outlines import shape_measure
 from mansion.building.recut import (
-    _least, _redrawn, _wide_rectangle, area_shares, band_columns, band_shares, cluster_cells, edge_grown,
-    in_a_row, judged_score,
+    _box_round, _least, _redrawn, _wide_rectangle, area_shares, band_columns, band_shares, cluster_cells,
+    edge_grown, in_a_row, judged_score,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
@@ -202,6 +202,10 @@ def _relaid_family(
     # the rows are laid out in the family's box, not the floor's grid (a tenth of the cells)
     rr, cc = np.nonzero(region)
     box = (slice(int(rr.min()), int(rr.max()) + 1), slice(int(cc.min()), int(cc.max()) + 1))
+    # and judged on that box and the cells round it (every wall of the family's rooms lies there,
+    # so judged_score finds what it would on the floor's grid): ``inner`` is the box within it
+    around = _box_round(region)
+    inner = tuple(slice(b.start - a.start, b.stop - a.start) for a, b in zip(around, box))
     for turn in range(4):
         view = np.rot90(region[box], turn)
         rows = np.nonzero(view.any(axis=1))[0]
@@ -253,16 +257,20 @@ def _relaid_family(
                     if seen in tried:
                         continue
                     tried.add(seen)
-                    new = labels.astype(np.int32)
-                    new[box] = laid
+                    new = labels[around].astype(np.int32)
+                    new[inner] = laid
                     score = judged_score(
                         layout, new, family, keep, before, least, targets, passable, building_type, min_contact,
                         own=True,
                     )
                     if score is not None and (best is None or score < best[0] - EPS):
                         best = (score, new, len(groups))
+    if best is None:
+        return None
     # only the kept re-layout is drawn
-    return None if best is None else (best[0], _redrawn(layout, best[1]), best[2])
+    whole = labels.astype(np.int32)
+    whole[around] = best[1]
+    return best[0], _redrawn(layout, whole), best[2]
 
 
 def _short_rows(

@@ -110,43 +110,20 @@ def mask_defects(mask: np.ndarray, room_type: str, building_type: str | None, ce
     """:func:`shape_defects` of the room whose cells ``mask`` holds (one piece; a grid of
     ``cell``-metre cells), counted on the grid: the same sets, many times faster than buffering
     its outline (each share is of cells, see :func:`square_cover`, and the elongation is the
-    cells' box). Cached by the cells' shape: the mends judge the same room's cells again and
-    again in the candidates they weigh (four in five measures of the hundred's mends are
-    repeats)."""
-    rr, cc = np.flatnonzero(mask.any(axis=1)), np.flatnonzero(mask.any(axis=0))
-    crop = mask[rr[0]:rr[-1] + 1, cc[0]:cc[-1] + 1]
-    key = (crop.shape, np.packbits(crop).tobytes(), room_type, building_type, cell)
-    found = _MEASURED.get(key)
-    if found is None:
-        if len(_MEASURED) >= MEASURED_CACHE:
-            _MEASURED.clear()
-        found = _MEASURED[key] = frozenset(_defects_of(crop, room_type, building_type, cell))
-    return set(found)
-
-
-#: Rooms' cells measured by :func:`mask_defects`, at most (then the cache starts afresh). The
-#: repeats are within a floor's mends; a cache of 65,536 made a process generating the hundred
-#: slower in all (every pass on against off 1.50 times, against 1.46 with 4,096: the collector
-#: walks its keys).
-MEASURED_CACHE = 1 << 12
-_MEASURED: dict[tuple[tuple[int, ...], bytes, str, str | None, float], frozenset[str]] = {}
-
-
-def _defects_of(crop: np.ndarray, room_type: str, building_type: str | None, cell: float) -> set[str]:
-    """:func:`mask_defects` of a room's cells cropped to their box."""
-    h, w = crop.shape
-    total = int(crop.sum())
-    design = room_design(room_type)
+    cells' box). Counted by the core in one pass (the mends judge tens of thousands of
+    candidates' cells on the hundred; a cache of the counts by the cells' shape cost more than
+    the core's count)."""
+    need = needed_width(room_type, building_type)
+    h, w, total, (usable, clear) = _core.box_cover(
+        mask, [block_side(USABLE_SIDE + 2 * EPS, cell), block_side(need - 2 * EPS, cell)],
+    )
     out: set[str] = set()
-    if not design.circulation and max(h, w) > ELONGATED_ASPECT * min(h, w):
+    if not room_design(room_type).circulation and max(h, w) > ELONGATED_ASPECT * min(h, w):
         out.add("elongated")
-    # inclusive: parts exactly 1 m wide are slivers (the cells square_cover would give, counted
-    # by the core)
-    usable = int(_core.covered_cells(crop, block_side(USABLE_SIDE + 2 * EPS, cell)))
+    # inclusive: parts exactly 1 m wide are slivers
     if total - usable > TOLERANCE * total + SHARE_EPS * total:
         out.add("sliver")
-    need = needed_width(room_type, building_type)
-    if total - int(_core.covered_cells(crop, block_side(need - 2 * EPS, cell))) > TOLERANCE * total + SHARE_EPS * total:
+    if total - clear > TOLERANCE * total + SHARE_EPS * total:
         out.add("narrow")
     if usable == 0:
         out.add("unusable")

@@ -632,16 +632,19 @@ def _best_recut(
     y0, y1 = max(r0 - 1, 0), min(r1 + 1, labels.shape[0])
     x0, x1 = max(c0 - 1, 0), min(c1 + 1, labels.shape[1])
     sub, sub_region = labels[y0:y1, x0:x1], region[y0:y1, x0:x1]
+    # the region all ``up``'s, and its cells (each rectangle lies inside the region)
+    given, region_cells = np.where(sub_region, k_up, sub).astype(np.int32), int(sub_region.sum())
     best: tuple[tuple[float, float, int, int], np.ndarray] | None = None
     for first, miss, y, x, h, w in shapes[:MAX_NARROW_TRIED if narrow else MAX_TRIED]:
         if best is not None and first > best[0][0] + EPS:
             break
-        new = np.where(sub_region, k_up, sub).astype(np.int32)
+        left = region_cells - h * w
+        if not left or left * cell * cell + EPS < min(up_least, rooms[up].area):
+            continue
+        new = given.copy()
         new[y - y0:y - y0 + h, x - x0:x - x0 + w] = k_room
         rest = sub_region.copy()
         rest[y - y0:y - y0 + h, x - x0:x - x0 + w] = False
-        if not rest.any() or rest.sum() * cell * cell + EPS < min(up_least, rooms[up].area):
-            continue
         # the shared walls first (measured by the core, the cheapest test), then the pieces
         walls = _walls(new, ids, cell, keep, min_contact)
         if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
@@ -760,14 +763,17 @@ def _best_suite(
     x0, x1 = max(int(cc.min()) - 1, 0), min(int(cc.max()) + 2, labels.shape[1])
     sub, sub_region = labels[y0:y1, x0:x1], region[y0:y1, x0:x1]
     inner_own = (labels == k_inner)[y0:y1, x0:x1]
+    # the region all ``up``'s, and its cells (each rectangle lies inside the region)
+    given, region_cells = np.where(sub_region, k_up, sub).astype(np.int32), int(sub_region.sum())
     best: tuple[tuple[float, float], np.ndarray] | None = None
     for first, miss, y, x, h, w in shapes[:MAX_SUITE_TRIED]:
         if best is not None and first > best[0][0]:
             break
+        left = region_cells - h * w
+        if not left or left * cell * cell + EPS < min(nodes[up].min_area or 0.0, rooms[up].area):
+            continue
         rest = sub_region.copy()
         rest[y - y0:y - y0 + h, x - x0:x - x0 + w] = False
-        if not rest.any() or rest.sum() * cell * cell + EPS < min(nodes[up].min_area or 0.0, rooms[up].area):
-            continue
         rest_checked: bool | None = None
         # the inner room in each corner, at each size that leaves the room its minimum and no
         # realism defect it may not have
@@ -782,7 +788,7 @@ def _best_suite(
                 kept = int(inner_own[ey - y0:ey - y0 + eh, ex - x0:ex - x0 + ew].sum())
                 spots.append((-kept, abs(eh * ew - inner_target), ey, ex, eh, ew))
         for _, _, ey, ex, eh, ew in sorted(spots)[:MAX_INNER_TRIED]:
-            new = np.where(sub_region, k_up, sub).astype(np.int32)
+            new = given.copy()
             new[y - y0:y - y0 + h, x - x0:x - x0 + w] = k_room
             new[ey - y0:ey - y0 + eh, ex - x0:ex - x0 + ew] = k_inner
             walls = _walls(new, ids, cell, keep, min_contact)
