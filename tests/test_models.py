@@ -254,6 +254,14 @@ def test_layout_helpers(tmp_path: Any) -> None:
     assert grid.room_at(3.9, 1.9) == "office"
     assert grid.room_at(-0.1, 0.5) is None
     assert grid.room_at(4.0, 0.5) is None
+    # the array is kept for the grid's labels, each caller given a copy of its own
+    arr[0, 0] = 7
+    assert grid.array()[0, 0] == 2
+    # a grid with other labels has its own array, the one it was given, and equals a grid read
+    # from the same lists
+    other = grid.relabelled(np.zeros((2, 4), dtype=np.int64), ids=grid.ids)
+    assert other.labels == [[0] * 4] * 2 and not other.array().any() and grid.array()[0, 0] == 2
+    assert other == grid.model_copy(update={"labels": [[0] * 4 for _ in range(2)]})
 
     path = layout.to_json(tmp_path / "sub" / "layout.json")
     assert FloorLayout.load(path) == layout.model_copy(update={"diagnostics": layout.diagnostics.model_copy(update={

@@ -6,7 +6,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "adjacencies", "grow_candidates", "place_room", "place_rooms"]
+__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "adjacencies", "covered_cells", "box_cover", "mask_pieces", "mask_passable", "mask_windows", "grow_candidates", "place_room", "place_rooms"]
 
 __version__: str
 
@@ -37,6 +37,32 @@ def vectorise(
 def adjacencies(labels: npt.NDArray[np.int32]) -> list[tuple[int, int, int, int]]:
     """(label a, label b, shared cell edges, longest straight run of them), a < b, for each pair
     of labels >= 0 of an int32 grid sharing a wall, as the solver measures a layout's."""
+
+def covered_cells(mask: npt.NDArray[np.bool_], m: int) -> int:
+    """Cells of a boolean mask that some m x m block of its cells covers."""
+
+def box_cover(mask: npt.NDArray[np.bool_], sides: list[int]) -> tuple[int, int, int, list[int]]:
+    """(rows, columns) of the box of a boolean mask's cells, its cells, and for each of sides the
+    cells some block of that side covers."""
+
+def mask_pieces(mask: npt.NDArray[np.bool_]) -> int:
+    """Number of 4-connected pieces of a boolean mask's cells."""
+
+def mask_passable(mask: npt.NDArray[np.bool_]) -> tuple[int, int]:
+    """(cells no 2 x 2 block of a boolean mask covers, pieces those blocks make joined by a side)."""
+
+def mask_windows(
+    region: npt.NDArray[np.bool_],
+    own: npt.NDArray[np.bool_],
+    side: int,
+    lo: int,
+    hi: int,
+    stretch: float,
+    bounds: tuple[int, int, int, int],
+) -> npt.NDArray[np.int64]:
+    """(h, w, row, column, cells of own held) of each rectangle of cells inside region within its
+    box (r0, r1, c0, c1): sides at least side, lo to hi cells, long side at most stretch times
+    the short; an int64 array (n, 5)."""
 
 def grow_candidates(
     labels: npt.NDArray[np.int32],

@@ -13,6 +13,7 @@ pub mod cleanup;
 pub mod cut;
 pub mod energy;
 pub mod growth;
+pub mod masks;
 pub mod place;
 pub mod raster;
 pub mod region;

@@ -40,7 +40,7 @@ const CORNER: [[i64; 2]; 4] = [[0, 0], [1, 0], [1, 1], [0, 1]];
 
 /// 4-connected components of the cells `eligible` accepts, joining neighbours `same` accepts.
 /// Components are numbered in order of their lowest cell index.
-fn components(
+pub(crate) fn components(
     w: usize,
     h: usize,
     eligible: impl Fn(usize) -> bool,

@@ -189,6 +189,89 @@ fn mask_outline(py: Python<'_>, mask: PyReadonlyArray2<'_, u8>) -> PyResult<(PyR
     Ok((ring_py(&outer), holes.iter().map(ring_py).collect()))
 }
 
+/// A boolean mask as mansion-core's masks take it: row-major cells, width, height.
+fn mask_cells(mask: &PyReadonlyArray2<'_, bool>) -> (Vec<bool>, usize, usize) {
+    let a = mask.as_array();
+    let (h, w) = (a.shape()[0], a.shape()[1]);
+    (a.iter().copied().collect(), w, h)
+}
+
+/// Cells of a boolean mask that some `m` × `m` block of its cells covers.
+#[pyfunction]
+fn covered_cells(py: Python<'_>, mask: PyReadonlyArray2<'_, bool>, m: usize) -> PyResult<usize> {
+    let (cells, w, h) = mask_cells(&mask);
+    guarded(py, move || {
+        Ok(mansion_core::masks::covered_cells(&cells, w, h, m))
+    })
+}
+
+/// (rows, columns) of the box of a boolean mask's cells, its cells, and for each of `sides` the
+/// cells some block of that side covers.
+#[pyfunction]
+fn box_cover(
+    py: Python<'_>,
+    mask: PyReadonlyArray2<'_, bool>,
+    sides: Vec<usize>,
+) -> PyResult<(usize, usize, usize, Vec<usize>)> {
+    let (cells, w, h) = mask_cells(&mask);
+    guarded(py, move || {
+        Ok(mansion_core::masks::box_cover(&cells, w, h, &sides))
+    })
+}
+
+/// Number of 4-connected pieces of a boolean mask's cells.
+#[pyfunction]
+fn mask_pieces(py: Python<'_>, mask: PyReadonlyArray2<'_, bool>) -> PyResult<usize> {
+    let (cells, w, h) = mask_cells(&mask);
+    guarded(py, move || Ok(mansion_core::masks::pieces(&cells, w, h)))
+}
+
+/// (cells no 2 × 2 block of a boolean mask covers, pieces those blocks make joined by a side).
+#[pyfunction]
+fn mask_passable(py: Python<'_>, mask: PyReadonlyArray2<'_, bool>) -> PyResult<(usize, usize)> {
+    let (cells, w, h) = mask_cells(&mask);
+    guarded(py, move || Ok(mansion_core::masks::passable(&cells, w, h)))
+}
+
+/// (h, w, row, column, cells of `own` held) of each rectangle of cells inside `region` (both
+/// boolean masks of one shape) within its box `(r0, r1, c0, c1)` (rows r0..r1, columns c0..c1):
+/// sides at least `side`, `lo` to `hi` cells, long side at most `stretch` times the short; an
+/// int64 array (n, 5).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+fn mask_windows<'py>(
+    py: Python<'py>,
+    region: PyReadonlyArray2<'py, bool>,
+    own: PyReadonlyArray2<'py, bool>,
+    side: usize,
+    lo: i64,
+    hi: i64,
+    stretch: f64,
+    bounds: (usize, usize, usize, usize),
+) -> PyResult<Bound<'py, PyArray2<i64>>> {
+    let (cells, w, h) = mask_cells(&region);
+    let (mine, ow, oh) = mask_cells(&own);
+    if (ow, oh) != (w, h)
+        || bounds.1 > h
+        || bounds.3 > w
+        || bounds.0 > bounds.1
+        || bounds.2 > bounds.3
+    {
+        return Err(pyo3::exceptions::PyValueError::new_err(
+            "masks or box of different shapes",
+        ));
+    }
+    let rows = guarded(py, move || {
+        Ok(mansion_core::masks::windows(
+            &cells, &mine, w, h, side, lo, hi, stretch, bounds,
+        ))
+    })?;
+    let flat: Vec<i64> = rows.iter().flatten().copied().collect();
+    Ok(Array2::from_shape_vec((rows.len(), 5), flat)
+        .expect("five columns a row")
+        .into_pyarray(py))
+}
+
 /// Exact polygons of a label grid (row 0 at the bottom; negative = no room):
 /// a list of (label, outer ring, holes) in grid vertex coordinates.
 #[pyfunction]
@@ -370,6 +453,11 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(mask_outline, m)?)?;
     m.add_function(wrap_pyfunction!(vectorise, m)?)?;
     m.add_function(wrap_pyfunction!(adjacencies, m)?)?;
+    m.add_function(wrap_pyfunction!(covered_cells, m)?)?;
+    m.add_function(wrap_pyfunction!(box_cover, m)?)?;
+    m.add_function(wrap_pyfunction!(mask_pieces, m)?)?;
+    m.add_function(wrap_pyfunction!(mask_passable, m)?)?;
+    m.add_function(wrap_pyfunction!(mask_windows, m)?)?;
     m.add_function(wrap_pyfunction!(grow_candidates, m)?)?;
     m.add_function(wrap_pyfunction!(place_room, m)?)?;
     m.add_function(wrap_pyfunction!(place_rooms, m)?)?;

@@ -51,7 +51,7 @@ from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import (
     DOOR_WIDTH, grid_adjacencies, mask_defects, may_receive, may_spare, rooms_from_grid,
 )
-from mansion.building.recut import _connected, _kept_walls, _passable, _walls, edge_grown
+from mansion.building.recut import Walls, _connected, _kept_walls, _passable, _walls, edge_grown
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import SANITARY_TYPES, design_key, room_design
@@ -269,7 +269,7 @@ def _judged(
 def _passed(
     outward: list[tuple[RoomEdge, str]],
     takers: tuple[str, ...],
-    walls: dict[frozenset[str], tuple[float, float]],
+    walls: Walls,
     min_contact: float,
 ) -> dict[tuple[str, str], list[str]] | None:
     """For each relation of a dropped room with a room that stays (the relation, that room): the
@@ -310,7 +310,7 @@ def _dissolved_layout(layout: FloorLayout, new: np.ndarray, gone: list[str], too
     relabelled = np.where(new >= 0, lut[np.maximum(new, 0)], new).astype(np.int32)
     rooms = {r.id: r for r in layout.rooms}
     targets = {t: rooms[t].target_area + area for t, area in took.items()}
-    grid = grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
+    grid = grid.relabelled(relabelled, ids=ids)
     kept = {rid: r for rid, r in rooms.items() if rid not in gone}
     drawn = {r.id: r for r in rooms_from_grid(relabelled, grid, kept, targets)}
     return layout.model_copy(update={

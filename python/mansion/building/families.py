@@ -49,18 +49,18 @@ import itertools
 from collections.abc import Iterable
 
 import numpy as np
-from shapely.geometry import Polygon
 
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
+from mansion.building.outlines import shape_measure
 from mansion.building.recut import (
-    _least, _redrawn, _wide_rectangle, area_shares, band_shares, cluster_cells, edge_grown, in_a_row,
-    judged_score,
+    _box_round, _least, _redrawn, _wide_rectangle, area_shares, band_columns, band_shares, cluster_cells,
+    edge_grown, in_a_row, judged_score,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
-from mansion.models.room_shape import EPS, mostly_narrower
+from mansion.models.room_shape import EPS
 
 __all__ = ["ALL_ORDERS", "MAX_FAMILY", "relay_families", "touching"]
 
@@ -100,12 +100,14 @@ def relay_families(
         if (room.id not in parent and room.id != graph.hub.id) or _wide_rectangle(room, building_type):
             continue
         # room_shape's measure, cached for the outlines the earlier mends measured already
-        if mostly_narrower(Polygon(room.polygon, room.holes), needed_width(room.room_type, building_type)):
+        if shape_measure(room, ("narrow", needed_width(room.room_type, building_type))):
             heads.update((room.id, parent.get(room.id, room.id)))
+    read = None
     for head in sorted(heads):
-        # the cut tree as it stands: a family laid out without a room has one room fewer
-        parent = cut_parents(graph)
-        nodes = {n.id: n for n in graph.nodes}
+        # the cut tree as it stands: a family laid out without a room has one room fewer (read
+        # again only then: only a drop changes the graph)
+        if graph is not read:
+            parent, nodes, read = cut_parents(graph), {n.id: n for n in graph.nodes}, graph
         if head not in nodes or nodes[head].is_core:
             continue
         members = sorted(r for r, up in parent.items() if up == head)
@@ -200,6 +202,10 @@ def _relaid_family(
     # the rows are laid out in the family's box, not the floor's grid (a tenth of the cells)
     rr, cc = np.nonzero(region)
     box = (slice(int(rr.min()), int(rr.max()) + 1), slice(int(cc.min()), int(cc.max()) + 1))
+    # and judged on that box and the cells round it (every wall of the family's rooms lies there,
+    # so judged_score finds what it would on the floor's grid): ``inner`` is the box within it
+    around = _box_round(region)
+    inner = tuple(slice(b.start - a.start, b.stop - a.start) for a, b in zip(around, box))
     for turn in range(4):
         view = np.rot90(region[box], turn)
         rows = np.nonzero(view.any(axis=1))[0]
@@ -223,24 +229,27 @@ def _relaid_family(
                     got = band_shares(part, group, least, targets, cell)
                     shares = None if got is None or shares is None else {**shares, **got}
                 # the head keeps what the bands leave, which must hold its minimum
-                if shares is None or float((view & ~band).sum()) * cell * cell + EPS < least[head]:
+                head_cells = view & ~band
+                if shares is None or float(head_cells.sum()) * cell * cell + EPS < least[head]:
                     continue
                 variants = [(order, shares) for order in orders]
                 if len(groups) == 1:
                     variants += _short_rows(band, head, members, orders, least, targets, head_width, cell)
+                columns = [band_columns(part) for part in parts]
                 for order, sizes in variants:
                     turned = turned_labels.copy()
-                    turned[view & ~band] = keys[head]
-                    if not all(in_a_row(turned, part, row, sizes, keys, cell) for part, row in zip(parts, order)):
+                    turned[head_cells] = keys[head]
+                    if not all(
+                        in_a_row(turned, part, row, sizes, keys, cell, cols)
+                        for part, row, cols in zip(parts, order, columns)
+                    ):
                         continue
                     # a room that was at its width must be as wide and as deep as it (fewer
                     # columns or rows of the band hold no square of it): a quick refusal
                     # before the measures
                     if any(
-                        min(
-                            int((turned == keys[m]).any(axis=1).sum()), int((turned == keys[m]).any(axis=0).sum()),
-                        ) * cell + EPS < firm[m]
-                        for m in members if firm[m]
+                        min(int(own.any(axis=1).sum()), int(own.any(axis=0).sum())) * cell + EPS < firm[m]
+                        for m in members if firm[m] for own in [turned == keys[m]]
                     ):
                         continue
                     laid = np.rot90(turned, -turn)
@@ -248,16 +257,20 @@ def _relaid_family(
                     if seen in tried:
                         continue
                     tried.add(seen)
-                    new = labels.astype(np.int32)
-                    new[box] = laid
+                    new = labels[around].astype(np.int32)
+                    new[inner] = laid
                     score = judged_score(
                         layout, new, family, keep, before, least, targets, passable, building_type, min_contact,
                         own=True,
                     )
                     if score is not None and (best is None or score < best[0] - EPS):
                         best = (score, new, len(groups))
+    if best is None:
+        return None
     # only the kept re-layout is drawn
-    return None if best is None else (best[0], _redrawn(layout, best[1]), best[2])
+    whole = labels.astype(np.int32)
+    whole[around] = best[1]
+    return best[0], _redrawn(layout, whole), best[2]
 
 
 def _short_rows(

@@ -39,7 +39,7 @@ import numpy as np
 
 from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, mask_defects, rooms_from_grid
-from mansion.building.recut import _pieces, _walls, _wide_rectangle, sound_body, wall_kept
+from mansion.building.recut import Walls, _pieces, _walls, _wide_rectangle, sound_body, wall_kept
 from mansion.building.stores import MAX_STORE, STORE_TYPE
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
@@ -119,7 +119,7 @@ def _split(
         new[rows, cols] = len(ids) + len(made)
         made.append((f"arm {len(made)}", hall, len(piece) * cell * cell))
     all_ids = ids + [m[0] for m in made]
-    walls = _walls(new, all_ids, cell, [], min_contact) or {}
+    walls: Walls | dict[frozenset[str], tuple[float, float]] = _walls(new, all_ids, cell, [], min_contact) or {}
     before_walls = {frozenset((a.a, a.b)): (a.contact, a.longest) for a in layout.adjacencies}
 
     def holds(x: str, y: str, was: tuple[float, float]) -> bool:
@@ -182,7 +182,7 @@ def _split(
     all_ids = [name.get(rid, rid) for rid in all_ids]
     final = [(name[rid], typ, area) for rid, typ, area in final]
     edges = [e.model_copy(update={"source": name.get(e.source, e.source), "target": name.get(e.target, e.target)}) for e in edges]
-    grid = layout.grid.model_copy(update={"ids": all_ids, "labels": new.tolist()})
+    grid = layout.grid.relabelled(new, ids=all_ids)
     old = dict(rooms)
     for rid, typ, area in final:
         old[rid] = rooms[room].model_copy(update={"id": rid, "room_type": typ, "type": "Entities", "target_area": area})

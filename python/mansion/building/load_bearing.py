@@ -44,12 +44,23 @@ def cut_parents(graph: RoomGraph) -> dict[str, str]:
     breadth-first search from the hub, cores never parents. The hub and the cores have none."""
     hub = graph.hub.id
     cores = {n.id for n in graph.nodes if n.is_core}
+    ids = {n.id for n in graph.nodes}
+    # each room's neighbours as RoomGraph.neighbours lists them (in edge order, each once), read
+    # in one pass over the edges: the mends ask for the cut tree thousands of times
+    beside: dict[str, list[str]] = {}
+    for edge in graph.edges:
+        for room, other in ((edge.source, edge.target), (edge.target, edge.source)):
+            near = beside.setdefault(room, [])
+            if other not in near:
+                near.append(other)
     parent: dict[str, str] = {}
     seen = {hub}
     queue = deque([hub])
     while queue:
         room = queue.popleft()
-        for child in graph.neighbours(room):
+        if room not in ids:
+            graph.node(room)  # RoomGraph.neighbours' error for a room the graph lacks
+        for child in beside.get(room, []):
             if child in seen or child in cores:
                 continue
             seen.add(child)

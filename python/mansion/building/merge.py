@@ -65,8 +65,8 @@ from mansion.models.room_design import ELONGATED_ASPECT, SANITARY_TYPES, design_
 from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, box_aspect, fits_square, mostly_narrower
 
 __all__ = [
-    "DOOR_WIDTH", "USABLE_SIDE", "grid_adjacencies", "mask_defects", "merge_unfit_rooms", "rooms_from_grid",
-    "shape_defects", "square_cover",
+    "DOOR_WIDTH", "USABLE_SIDE", "block_side", "grid_adjacencies", "mask_defects", "merge_unfit_rooms",
+    "rooms_from_grid", "shape_defects", "square_cover",
 ]
 
 #: Shared wall (m) two rooms need to be merged: a door's width, as ``mansion eval realism`` asks
@@ -110,42 +110,20 @@ def mask_defects(mask: np.ndarray, room_type: str, building_type: str | None, ce
     """:func:`shape_defects` of the room whose cells ``mask`` holds (one piece; a grid of
     ``cell``-metre cells), counted on the grid: the same sets, many times faster than buffering
     its outline (each share is of cells, see :func:`square_cover`, and the elongation is the
-    cells' box). Cached by the cells' shape: the mends judge the same room's cells again and
-    again in the candidates they weigh (four in five measures of the hundred's mends are
-    repeats)."""
-    rr, cc = np.nonzero(mask)
-    crop = mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1]
-    key = (crop.shape, np.packbits(crop).tobytes(), room_type, building_type, cell)
-    found = _MEASURED.get(key)
-    if found is None:
-        if len(_MEASURED) >= MEASURED_CACHE:
-            _MEASURED.clear()
-        found = _MEASURED[key] = frozenset(_defects_of(crop, room_type, building_type, cell))
-    return set(found)
-
-
-#: Rooms' cells measured by :func:`mask_defects`, at most (then the cache starts afresh). The
-#: repeats are within a floor's mends; a cache of 65,536 made a process generating the hundred
-#: slower in all (every pass on against off 1.50 times, against 1.46 with 4,096: the collector
-#: walks its keys).
-MEASURED_CACHE = 1 << 12
-_MEASURED: dict[tuple[tuple[int, ...], bytes, str, str | None, float], frozenset[str]] = {}
-
-
-def _defects_of(crop: np.ndarray, room_type: str, building_type: str | None, cell: float) -> set[str]:
-    """:func:`mask_defects` of a room's cells cropped to their box."""
-    h, w = crop.shape
-    total = int(crop.sum())
-    design = room_design(room_type)
+    cells' box). Counted by the core in one pass (the mends judge tens of thousands of
+    candidates' cells on the hundred; a cache of the counts by the cells' shape cost more than
+    the core's count)."""
+    need = needed_width(room_type, building_type)
+    h, w, total, (usable, clear) = _core.box_cover(
+        mask, [block_side(USABLE_SIDE + 2 * EPS, cell), block_side(need - 2 * EPS, cell)],
+    )
     out: set[str] = set()
-    if not design.circulation and max(h, w) > ELONGATED_ASPECT * min(h, w):
+    if not room_design(room_type).circulation and max(h, w) > ELONGATED_ASPECT * min(h, w):
         out.add("elongated")
     # inclusive: parts exactly 1 m wide are slivers
-    usable = int(square_cover(crop, USABLE_SIDE + 2 * EPS, cell).sum())
     if total - usable > TOLERANCE * total + SHARE_EPS * total:
         out.add("sliver")
-    need = needed_width(room_type, building_type)
-    if total - int(square_cover(crop, need - 2 * EPS, cell).sum()) > TOLERANCE * total + SHARE_EPS * total:
+    if total - clear > TOLERANCE * total + SHARE_EPS * total:
         out.add("narrow")
     if usable == 0:
         out.add("unusable")
@@ -159,7 +137,7 @@ def square_cover(mask: np.ndarray, width: float, cell: float) -> np.ndarray:
     exactly the blocks that do (a square off the grid spans whole cells of the shape on every row
     and column it touches)."""
     h, w = mask.shape
-    m = int(np.ceil(width / cell - 1e-9))
+    m = block_side(width, cell)
     if m <= 1:
         return mask.copy()
     if m > h or m > w:
@@ -177,6 +155,11 @@ def square_cover(mask: np.ndarray, width: float, cell: float) -> np.ndarray:
     stamp[:bh, m:m + bw] -= fits
     stamp[m:m + bh, m:m + bw] += fits
     return np.cumsum(np.cumsum(stamp, axis=0), axis=1)[:h, :w] > 0
+
+
+def block_side(width: float, cell: float) -> int:
+    """Cells a side of the block a square ``width`` metres wide needs (:func:`square_cover`)."""
+    return int(np.ceil(width / cell - 1e-9))
 
 
 def rooms_from_grid(
@@ -478,7 +461,7 @@ def _merged_layout(layout: FloorLayout, gone: str, stays: str) -> FloorLayout:
     k_gone, k_stays = layout.grid.ids.index(gone), layout.grid.ids.index(stays)
     relabelled = np.where(labels == k_gone, k_stays, labels)
     relabelled = np.where(relabelled > k_gone, relabelled - 1, relabelled).astype(np.int32)
-    grid = layout.grid.model_copy(update={"ids": ids, "labels": relabelled.tolist()})
+    grid = layout.grid.relabelled(relabelled, ids=ids)
     targets = {stays: rooms[stays].target_area + rooms[gone].target_area}
     return layout.model_copy(update={
         "rooms": rooms_from_grid(relabelled, grid, rooms, targets),

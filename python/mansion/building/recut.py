@@ -64,19 +64,20 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable
+from typing import overload
 
 import numpy as np
-from shapely.geometry import Polygon
 
 from mansion import _core
 from mansion.building.load_bearing import cut_parents, first_round_groups
+from mansion.building.outlines import outline, shape_measure
 from mansion.building.merge import (
     DOOR_WIDTH, USABLE_SIDE, grid_adjacencies, mask_defects, rooms_from_grid, shape_defects, square_cover,
 )
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout, LayoutRoom
 from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
-from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE, mostly_narrower
+from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
 __all__ = ["hand_off_strips", "recut_narrow_rooms", "recut_unfit_rooms", "widen_passages"]
 
@@ -177,7 +178,7 @@ def recut_narrow_rooms(
         r = rooms[rid]
         if _wide_rectangle(r, building_type):
             return False
-        return mostly_narrower(Polygon(r.polygon, r.holes), needed_width(r.room_type, building_type))
+        return bool(shape_measure(r, ("narrow", needed_width(r.room_type, building_type))))
 
     children: dict[str, list[str]] = {}
     for child, head in sorted(parent.items()):
@@ -607,8 +608,7 @@ def _best_recut(
         hi = int(target * NARROW_SPAN[1] / (cell * cell))
     # the relations whose shared walls must hold, with what they had
     keep = _kept_walls(layout, graph, {room, up})
-    old_room = Polygon(rooms[room].polygon, rooms[room].holes)
-    old_up = Polygon(rooms[up].polygon, rooms[up].holes)
+    old_room, old_up = outline(rooms[room]), outline(rooms[up])
     room_defects = shape_defects(old_room, node.room_type, building_type)
     up_defects = shape_defects(old_up, rooms[up].room_type, building_type)
     up_node = next(n for n in graph.nodes if n.id == up)
@@ -617,26 +617,34 @@ def _best_recut(
     # the room comes out a rectangle at least its width each way, so of the realism defects it
     # can only be elongated: never where it was not
     stretch = np.inf if design.circulation or "elongated" in room_defects else ELONGATED_ASPECT
-    shapes: list[tuple[float, float, int, int, int, int]] = []
-    for h, w, y, x, kept in _windows(region, labels == k_room, side, lo, hi, stretch):
-        miss = abs(h * w * cell * cell - target)
-        shapes.append((-float(kept), miss, y, x, h, w) if narrow else (miss, 0.0, y, x, h, w))
-    shapes.sort()
+    hs, ws, ys, xs, kept = _windows(region, labels == k_room, side, lo, hi, stretch).T
+    misses = np.abs(hs * ws * cell * cell - target)
+    # the rectangles in the order of the keys below (each names one rectangle, so any sort
+    # gives this order); only the first few are judged
+    order = np.lexsort((ws, hs, xs, ys, misses, -kept) if narrow else (ws, hs, xs, ys, misses))
+    shapes = [
+        (-float(kept[i]), float(misses[i]), int(ys[i]), int(xs[i]), int(hs[i]), int(ws[i])) if narrow
+        else (float(misses[i]), 0.0, int(ys[i]), int(xs[i]), int(hs[i]), int(ws[i]))
+        for i in order[:MAX_NARROW_TRIED if narrow else MAX_TRIED].tolist()
+    ]
     # each rectangle is judged on the region's box and the cells around it (every wall of the two
     # rooms lies there): a floor's whole grid is many times larger
     y0, y1 = max(r0 - 1, 0), min(r1 + 1, labels.shape[0])
     x0, x1 = max(c0 - 1, 0), min(c1 + 1, labels.shape[1])
     sub, sub_region = labels[y0:y1, x0:x1], region[y0:y1, x0:x1]
+    # the region all ``up``'s, and its cells (each rectangle lies inside the region)
+    given, region_cells = np.where(sub_region, k_up, sub).astype(np.int32), int(sub_region.sum())
     best: tuple[tuple[float, float, int, int], np.ndarray] | None = None
     for first, miss, y, x, h, w in shapes[:MAX_NARROW_TRIED if narrow else MAX_TRIED]:
         if best is not None and first > best[0][0] + EPS:
             break
-        new = np.where(sub_region, k_up, sub).astype(np.int32)
+        left = region_cells - h * w
+        if not left or left * cell * cell + EPS < min(up_least, rooms[up].area):
+            continue
+        new = given.copy()
         new[y - y0:y - y0 + h, x - x0:x - x0 + w] = k_room
         rest = sub_region.copy()
         rest[y - y0:y - y0 + h, x - x0:x - x0 + w] = False
-        if not rest.any() or rest.sum() * cell * cell + EPS < min(up_least, rooms[up].area):
-            continue
         # the shared walls first (measured by the core, the cheapest test), then the pieces
         walls = _walls(new, ids, cell, keep, min_contact)
         if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
@@ -658,32 +666,14 @@ def _best_recut(
 
 def _windows(
     region: np.ndarray, own: np.ndarray, side: int, lo: int, hi: int, stretch: float,
-) -> list[tuple[int, int, int, int, int]]:
-    """(h, w, row, column, cells of ``own`` it holds) of every h × w rectangle of the grid's cells
-    lying inside ``region``, by its lower-left cell: both sides at least ``side`` cells, ``lo`` to
-    ``hi`` cells, its long side at most ``stretch`` times its short one."""
+) -> np.ndarray:
+    """(h, w, row, column, cells of ``own`` it holds), one row of an int64 array each, of every
+    h × w rectangle of the grid's cells lying inside ``region``, by its lower-left cell: both
+    sides at least ``side`` cells, ``lo`` to ``hi`` cells, its long side at most ``stretch`` times
+    its short one. Found by the core (prefix sums of the two masks): a recut weighs thousands."""
     rr, cc = np.nonzero(region)
-    r0, r1, c0, c1 = rr.min(), rr.max() + 1, cc.min(), cc.max() + 1
-    # prefix sums of the region: a rectangle lies inside it when it holds h * w region cells
-    inside = np.zeros((region.shape[0] + 1, region.shape[1] + 1), dtype=np.int64)
-    inside[1:, 1:] = np.cumsum(np.cumsum(region, axis=0), axis=1)
-    # and of the room's own cells: how many of them a rectangle keeps
-    mine = np.zeros_like(inside)
-    mine[1:, 1:] = np.cumsum(np.cumsum(own, axis=0), axis=1)
-    out: list[tuple[int, int, int, int, int]] = []
-    for h in range(side, r1 - r0 + 1):
-        for w in range(side, c1 - c0 + 1):
-            if not lo <= h * w <= hi or max(h, w) > stretch * min(h, w):
-                continue
-            full = (
-                inside[r0 + h:r1 + 1, c0 + w:c1 + 1] - inside[r0:r1 + 1 - h, c0 + w:c1 + 1]
-                - inside[r0 + h:r1 + 1, c0:c1 + 1 - w] + inside[r0:r1 + 1 - h, c0:c1 + 1 - w]
-            ) == h * w
-            for y, x in zip(*np.nonzero(full)):
-                y, x = int(y) + r0, int(x) + c0
-                kept = int(mine[y + h, x + w] - mine[y, x + w] - mine[y + h, x] + mine[y, x])
-                out.append((h, w, y, x, kept))
-    return out
+    box = (int(rr.min()), int(rr.max()) + 1, int(cc.min()), int(cc.max()) + 1)
+    return _core.mask_windows(region, own, side, lo, hi, float(stretch), box)
 
 
 def _rest_holds(
@@ -748,17 +738,19 @@ def _best_suite(
     inner_hi = int(max(rooms[inner].area, least_inner) * INNER_GROWTH / (cell * cell))
     inner_target = max(rooms[inner].area, least_inner) / (cell * cell)
     before = {
-        rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
+        rid: shape_defects(outline(rooms[rid]), rooms[rid].room_type, building_type)
         for rid in (room, up)
     }
     allowed = before[room] - {"narrow"}
     passable = {rid: _passable(labels == ids.index(rid)) for rid in (room, up)}
     keep = _kept_walls(layout, graph, {room, inner, up})
     stretch = np.inf if "elongated" in before[room] else ELONGATED_ASPECT
-    shapes = sorted(
-        (-kept, abs(h * w - cells), y, x, h, w)
-        for h, w, y, x, kept in _windows(region, suite, side, lo, hi, stretch)
-    )
+    hs, ws, ys, xs, kept = _windows(region, suite, side, lo, hi, stretch).T
+    misses = np.abs(hs * ws - cells)
+    shapes = [
+        (-int(kept[i]), int(misses[i]), int(ys[i]), int(xs[i]), int(hs[i]), int(ws[i]))
+        for i in np.lexsort((ws, hs, xs, ys, misses, -kept))[:MAX_SUITE_TRIED].tolist()
+    ]
     # the inner room's sizes (h, w): its minimum and width, its proportions, about its area first
     sizes = sorted(
         ((eh, ew) for eh in range(inner_side, int(inner_hi // inner_side) + 1)
@@ -771,14 +763,17 @@ def _best_suite(
     x0, x1 = max(int(cc.min()) - 1, 0), min(int(cc.max()) + 2, labels.shape[1])
     sub, sub_region = labels[y0:y1, x0:x1], region[y0:y1, x0:x1]
     inner_own = (labels == k_inner)[y0:y1, x0:x1]
+    # the region all ``up``'s, and its cells (each rectangle lies inside the region)
+    given, region_cells = np.where(sub_region, k_up, sub).astype(np.int32), int(sub_region.sum())
     best: tuple[tuple[float, float], np.ndarray] | None = None
     for first, miss, y, x, h, w in shapes[:MAX_SUITE_TRIED]:
         if best is not None and first > best[0][0]:
             break
+        left = region_cells - h * w
+        if not left or left * cell * cell + EPS < min(nodes[up].min_area or 0.0, rooms[up].area):
+            continue
         rest = sub_region.copy()
         rest[y - y0:y - y0 + h, x - x0:x - x0 + w] = False
-        if not rest.any() or rest.sum() * cell * cell + EPS < min(nodes[up].min_area or 0.0, rooms[up].area):
-            continue
         rest_checked: bool | None = None
         # the inner room in each corner, at each size that leaves the room its minimum and no
         # realism defect it may not have
@@ -793,7 +788,7 @@ def _best_suite(
                 kept = int(inner_own[ey - y0:ey - y0 + eh, ex - x0:ex - x0 + ew].sum())
                 spots.append((-kept, abs(eh * ew - inner_target), ey, ex, eh, ew))
         for _, _, ey, ex, eh, ew in sorted(spots)[:MAX_INNER_TRIED]:
-            new = np.where(sub_region, k_up, sub).astype(np.int32)
+            new = given.copy()
             new[y - y0:y - y0 + h, x - x0:x - x0 + w] = k_room
             new[ey - y0:ey - y0 + eh, ex - x0:ex - x0 + ew] = k_inner
             walls = _walls(new, ids, cell, keep, min_contact)
@@ -854,18 +849,50 @@ def _l_defects(h: int, w: int, eh: int, ew: int, width: float, cell: float) -> s
 
 def _walls(
     new: np.ndarray, ids: list[str], cell: float, keep: list[tuple[str, str, float, float]], min_contact: float,
-) -> dict[frozenset[str], tuple[float, float]] | None:
-    """The shared walls of label grid ``new`` (pair → (contact, longest), metres, measured by the
-    core), or None when a relation in ``keep`` (its rooms, longest wall and contact before) lost
-    its wall: a door's (``min_contact``) where it had one, else what it had."""
-    walls = {
-        frozenset((ids[a], ids[b])): (total * cell, longest * cell)
-        for a, b, total, longest in _core.adjacencies(new.astype(np.int32))
-    }
+) -> Walls | None:
+    """The shared walls of label grid ``new`` (:class:`Walls`: pair → (contact, longest), metres,
+    measured by the core), or None when a relation in ``keep`` (its rooms, longest wall and
+    contact before) lost its wall: a door's (``min_contact``) where it had one, else what it had."""
+    walls = Walls(_core.adjacencies(new.astype(np.int32)), ids, cell)
     for s, t, longest, contact in keep:
-        if not wall_kept(walls.get(frozenset((s, t))), longest, contact, min_contact):
+        if not wall_kept(walls.pair(s, t), longest, contact, min_contact):
             return None
     return walls
+
+
+class Walls:
+    """The shared walls of a label grid read as a dict of pair of room ids (a frozenset) →
+    (contact, longest) in metres: only the pairs asked for are looked up by label (a floor's grid
+    holds a hundred pairs where a mend asks of a few; naming them all took a tenth of the mends'
+    time)."""
+
+    __slots__ = ("_cell", "_ids", "_pairs")
+
+    def __init__(self, pairs: list[tuple[int, int, int, int]], ids: list[str], cell: float) -> None:
+        self._pairs = {(a, b): (total, longest) for a, b, total, longest in pairs}  # the core's a < b
+        self._ids, self._cell = ids, cell
+
+    def __len__(self) -> int:
+        return len(self._pairs)
+
+    def pair(self, s: str, t: str) -> tuple[float, float] | None:
+        """(contact, longest) of rooms ``s`` and ``t``, None when they share no wall."""
+        if s == t or s not in self._ids or t not in self._ids:
+            return None
+        a, b = self._ids.index(s), self._ids.index(t)
+        found = self._pairs.get((a, b) if a < b else (b, a))
+        return None if found is None else (found[0] * self._cell, found[1] * self._cell)
+
+    @overload
+    def get(self, key: frozenset[str]) -> tuple[float, float] | None: ...
+
+    @overload
+    def get(self, key: frozenset[str], default: tuple[float, float]) -> tuple[float, float]: ...
+
+    def get(self, key: frozenset[str], default: tuple[float, float] | None = None) -> tuple[float, float] | None:
+        """As ``dict.get`` for ``key``, a pair of room ids."""
+        found = self.pair(*key) if len(key) == 2 else None
+        return default if found is None else found
 
 
 def wall_kept(now: tuple[float, float] | None, longest: float, contact: float, min_contact: float) -> bool:
@@ -884,7 +911,7 @@ def _redrawn(layout: FloorLayout, new: np.ndarray) -> FloorLayout:
     drawn = {r.id: r for r in rooms_from_grid(new, grid, {r.id: r for r in layout.rooms}, {})}
     return layout.model_copy(update={
         "rooms": [drawn.get(r.id, r) for r in layout.rooms],
-        "grid": grid.model_copy(update={"labels": new.tolist()}),
+        "grid": grid.relabelled(new),
         "adjacencies": grid_adjacencies(new, list(grid.ids), grid.cell_size),
     })
 
@@ -894,14 +921,10 @@ def _passable(mask: np.ndarray) -> tuple[int, int]:
     joined only where they overlap by a 1 m side): a part one cell (0.5 m) wide is a passage the
     agent cannot take (``mansion validate``'s navigation), and so is a neck where two squares
     meet at one cell, a staircase of the grid the squares' union would call connected (building
-    21 of the hundred: a corridor joined to its lift that way, which the navigation bench found)."""
-    window, covered = _squares(mask)
-    if not covered.any():
-        return int(mask.sum()), 0
-    # the squares by their lower-left cells: two whose cells are edge neighbours share a 1 m side
-    rr, cc = np.nonzero(window)
-    crop = np.where(window[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
-    return int((mask & ~covered).sum()), len(_core.vectorise(crop))
+    21 of the hundred: a corridor joined to its lift that way, which the navigation bench found).
+    Counted by the core: the mends ask it of ten thousand candidates on the hundred."""
+    uncovered, pieces = _core.mask_passable(mask)
+    return int(uncovered), int(pieces)
 
 
 def edge_grown(mask: np.ndarray) -> np.ndarray:
@@ -927,11 +950,18 @@ def _squares(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return window, covered
 
 
+def _box_round(mask: np.ndarray) -> tuple[slice, slice]:
+    """The box of the True cells of ``mask`` and one cell round it, within the grid (the whole
+    grid when there are none)."""
+    rr, cc = np.nonzero(mask.any(axis=1))[0], np.nonzero(mask.any(axis=0))[0]
+    if not len(rr):
+        return slice(None), slice(None)
+    return slice(max(int(rr[0]) - 1, 0), int(rr[-1]) + 2), slice(max(int(cc[0]) - 1, 0), int(cc[-1]) + 2)
+
+
 def _connected(mask: np.ndarray) -> bool:
     """Whether the True cells of ``mask`` form one 4-connected piece (as the core draws rooms)."""
-    rr, cc = np.nonzero(mask)
-    crop = np.where(mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1], 0, -1).astype(np.int32)
-    return len(_core.vectorise(crop)) == 1
+    return int(_core.mask_pieces(mask)) == 1
 
 
 #: Rooms a cluster's head serves at most for it to be laid out again (their orders are tried).
@@ -979,7 +1009,7 @@ def _relaid_cluster(
     rooms = {r.id: r for r in layout.rooms}
     nodes = {n.id: n for n in graph.nodes}
     before = {
-        rid: shape_defects(Polygon(rooms[rid].polygon, rooms[rid].holes), rooms[rid].room_type, building_type)
+        rid: shape_defects(outline(rooms[rid]), rooms[rid].room_type, building_type)
         for rid in cluster
     }
     least = {rid: nodes[rid].min_area or 0.0 for rid in cluster}
@@ -996,10 +1026,11 @@ def _relaid_cluster(
         shares = band_shares(band, members, least, targets, cell)
         if shares is None:
             continue
+        columns = band_columns(band)
         for order in itertools.permutations(members):
             turned = np.rot90(labels, turn).copy()
             turned[strip] = keys[head]
-            if in_a_row(turned, band, order, shares, keys, cell):
+            if in_a_row(turned, band, order, shares, keys, cell, columns):
                 new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
                 score = judged_score(
                     layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact,
@@ -1051,15 +1082,22 @@ def area_shares(
     return {m: w + spare for m, w in want.items()}
 
 
+def band_columns(band: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The columns of ``band`` that hold cells of it, and the cells those columns hold summed
+    along them: what :func:`in_a_row` cuts the band by (the same for every order tried)."""
+    cols = np.nonzero(band.any(axis=0))[0]
+    return cols, band[:, cols].sum(axis=0).cumsum()
+
+
 def in_a_row(
     turned: np.ndarray, band: np.ndarray, order: tuple[str, ...], shares: dict[str, float],
-    keys: dict[str, int], cell: float,
+    keys: dict[str, int], cell: float, columns: tuple[np.ndarray, np.ndarray] | None = None,
 ) -> bool:
     """Label the cells of ``band`` in ``turned`` (in place) with ``order``'s rooms side by side,
     each a run of whole columns holding about its share (:func:`band_shares`), the last the
-    rest; False (``turned`` then half written) when a room would get no column."""
-    cols = np.nonzero(band.any(axis=0))[0]
-    cum = band[:, cols].sum(axis=0).cumsum()
+    rest; False (``turned`` then half written) when a room would get no column. ``columns``: the
+    band's :func:`band_columns`, where the caller has them."""
+    cols, cum = band_columns(band) if columns is None else columns
     ends, share = [], 0.0
     for m in order[:-1]:
         share += shares[m]
@@ -1069,9 +1107,9 @@ def in_a_row(
     for m, stop in zip(order, ends):
         if stop < start:
             return False
-        piece = np.zeros_like(band)
-        piece[:, cols[start:stop + 1]] = True
-        turned[band & piece] = keys[m]
+        # the columns from the run's first to its last: those between hold none of the band
+        run = slice(int(cols[start]), int(cols[stop]) + 1)
+        turned[:, run][band[:, run]] = keys[m]
         start = stop + 1
     return True
 
@@ -1102,7 +1140,12 @@ def judged_score(
     ids = list(grid.ids)
     cell = grid.cell_size
     layout_types = {r.id: r.room_type for r in layout.rooms}
-    masks = {rid: new == ids.index(rid) for rid in cluster}
+    # judged on the cluster's box and the cells round it (every wall of its rooms lies there): a
+    # floor's grid is many times larger, and each measure is the same on the box
+    whole = {rid: new == ids.index(rid) for rid in cluster}
+    box = _box_round(np.logical_or.reduce(list(whole.values())))
+    new = new[box]
+    masks = {rid: mask[box] for rid, mask in whole.items()}
     # the cheap rules first (areas, then pieces, then the defects), the costly ones last
     if any(m.sum() * cell ** 2 + EPS < least[rid] for rid, m in masks.items()):
         return None

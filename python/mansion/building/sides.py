@@ -42,7 +42,8 @@ from __future__ import annotations
 import numpy as np
 
 from mansion.building.load_bearing import first_round_groups
-from mansion.building.merge import mask_defects, square_cover
+from mansion import _core
+from mansion.building.merge import block_side, mask_defects
 from mansion.building.recut import _kept_walls, _least, _passable, _redrawn, _squares, _wide_rectangle, judged_score
 from mansion.models.graph import RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
@@ -80,10 +81,9 @@ def widen_sides(
 
 
 def _uncovered(mask: np.ndarray, width: float, cell: float) -> int:
-    """Cells of ``mask`` that no square ``width`` metres wide inside it covers."""
-    rr, cc = np.nonzero(mask)
-    crop = mask[rr.min():rr.max() + 1, cc.min():cc.max() + 1]
-    return int(crop.sum() - square_cover(crop, width - 2 * EPS, cell).sum())
+    """Cells of ``mask`` that no square ``width`` metres wide inside it covers (those
+    :func:`~mansion.building.merge.square_cover` leaves, counted by the core)."""
+    return int(mask.sum()) - int(_core.covered_cells(mask, block_side(width - 2 * EPS, cell)))
 
 
 def enlarge_rooms(

@@ -57,7 +57,6 @@ import math
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from shapely.geometry import Polygon
 
 from mansion.building.checks import check_building
 from mansion.building.load_bearing import (
@@ -73,6 +72,7 @@ from mansion.building.dissolve import dissolve_unfit_rooms
 from mansion.building.families import relay_families
 from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
+from mansion.building.outlines import outline, shape_measure
 from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.stores import store_pockets
@@ -82,7 +82,7 @@ from mansion.models import Core, FloorLayout, Footprint, RoomGraph
 from mansion.models.layout import LayoutRoom
 from mansion.models.building import Building, BuildingProgram, Floor, Palette, PositionWord, RoomCard
 from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
-from mansion.models.room_shape import EPS, box_aspect, fits_square, mostly_narrower
+from mansion.models.room_shape import box_aspect, mostly_narrower
 
 __all__ = [
     "ATTEMPTS",
@@ -401,39 +401,10 @@ def unfit_rooms(rooms: Iterable[LayoutRoom], graph: RoomGraph) -> dict[str, str]
         node = nodes.get(room.id)
         if room.is_core or node is None:
             continue
-        why = _shape_measure(room, ("unfit", node.min_area))
+        why = shape_measure(room, ("unfit", node.min_area))
         if why:
             out[room.id] = why
     return out
-
-
-#: Rooms' shapes measured by :func:`unfit_rooms` and :func:`narrow_rooms`, at most (then the
-#: cache starts afresh): the mends and the floors laid out again ask of the same rooms again and
-#: again (the two took 2.6 s of the hundred's 35 s, measuring shapely outlines).
-SHAPES_CACHE = 1 << 12
-_SHAPES: dict[tuple[object, ...], str | bool] = {}
-
-
-def _shape_measure(room: LayoutRoom, what: tuple[str, object]) -> str | bool:
-    """:func:`unfit_rooms`' why (``("unfit", min_area)``; "" for a fit room) or whether the room
-    is below its clear width (``("narrow", width)``) of ``room``'s outline, cached by the outline."""
-    key = (what, tuple(room.polygon), tuple(tuple(h) for h in room.holes))
-    found = _SHAPES.get(key)
-    if found is None:
-        if len(_SHAPES) >= SHAPES_CACHE:
-            _SHAPES.clear()
-        shape = Polygon(room.polygon, room.holes)
-        kind, value = what
-        if kind == "narrow":
-            found = mostly_narrower(shape, value)  # type: ignore[arg-type]
-        elif value is not None and shape.area < value - EPS:  # type: ignore[operator]
-            found = f"laid out at {shape.area:.1f} m², below its {value:g} m² minimum"
-        elif not fits_square(shape, USABLE_SIDE, inclusive=True):
-            found = f"laid out with no usable {USABLE_SIDE:g} m square"
-        else:
-            found = ""
-        _SHAPES[key] = found
-    return found
 
 
 def narrow_rooms(rooms: Iterable[LayoutRoom], building_type: str | None) -> set[str]:
@@ -442,7 +413,7 @@ def narrow_rooms(rooms: Iterable[LayoutRoom], building_type: str | None) -> set[
     its building type's corridor width)."""
     return {
         room.id for room in rooms
-        if not room.is_core and _shape_measure(room, ("narrow", needed_width(room.room_type, building_type)))
+        if not room.is_core and shape_measure(room, ("narrow", needed_width(room.room_type, building_type)))
     }
 
 
@@ -466,7 +437,7 @@ def misshapen(rooms: Iterable[LayoutRoom]) -> tuple[int, int]:
     for room in rooms:
         if room.is_core:
             continue
-        shape = Polygon(room.polygon, room.holes)
+        shape = outline(room)
         if not room_design(room.room_type).circulation:
             elongated += box_aspect(shape) > ELONGATED_ASPECT
         slivers += mostly_narrower(shape, USABLE_SIDE, inclusive=True)

@@ -102,7 +102,7 @@ def _stored(
         walls.get(frozenset((room, sid)), (0.0, 0.0))[1] + EPS < max(DOOR_WIDTH, min_contact) for sid, _ in stores
     ):
         return None
-    grid = layout.grid.model_copy(update={"ids": all_ids, "labels": new.tolist()})
+    grid = layout.grid.relabelled(new, ids=all_ids)
     old = dict(rooms)
     for sid, area in stores:
         old[sid] = rooms[room].model_copy(update={"id": sid, "room_type": STORE_TYPE, "type": "Entities", "target_area": area})

@@ -94,10 +94,24 @@ class LabelGrid(BaseModel):
         return self
 
     def array(self) -> npt.NDArray[np.int32]:
-        """The labels as an int32 array of shape (rows, cols), row 0 at the bottom."""
+        """The labels as an int32 array of shape (rows, cols), row 0 at the bottom (a copy of
+        the one :data:`_ARRAYS` keeps for this grid's labels)."""
         import numpy as np
 
-        return np.asarray(self.labels, dtype=np.int32).reshape(self.rows, self.cols)
+        found = _ARRAYS.get(id(self.labels))
+        if found is None or found[0] is not self.labels or found[1].shape != (self.rows, self.cols):
+            found = _known(self.labels, np.asarray(self.labels, dtype=np.int32).reshape(self.rows, self.cols))
+        return found[1].copy()
+
+    def relabelled(self, labels: npt.NDArray[np.integer], **update: object) -> LabelGrid:
+        """This grid with ``labels`` (an int array of shape (rows, cols)) and the fields of
+        ``update``, its :meth:`array` known without reading the lists back."""
+        import numpy as np
+
+        lists = labels.tolist()
+        grid = self.model_copy(update={**update, "labels": lists})
+        _known(lists, np.array(labels, dtype=np.int32))
+        return grid
 
     def room_at(self, x: float, y: float) -> str | None:
         """Id of the room whose cell contains the point (x, y) in metres, or None.
@@ -111,6 +125,23 @@ class LabelGrid(BaseModel):
             return None
         k = self.labels[r][c]
         return self.ids[k] if k >= 0 else None
+
+
+#: The arrays of label grids' labels (:meth:`LabelGrid.array`), by the labels' list, which each
+#: entry holds so that its id stays its own; at most this many (then the cache starts afresh).
+#: The floor's mends read the same grids again and again (ten thousand times on the hundred, a
+#: tenth of their time spent reading lists into arrays). A grid's labels are never changed in
+#: place (a grid with other labels is a copy).
+ARRAYS_CACHE = 1 << 8
+_ARRAYS: dict[int, tuple[list[list[int]], npt.NDArray[np.int32]]] = {}
+
+
+def _known(labels: list[list[int]], array: npt.NDArray[np.int32]) -> tuple[list[list[int]], npt.NDArray[np.int32]]:
+    """Keep ``array`` as the array of ``labels`` (:data:`_ARRAYS`)."""
+    if len(_ARRAYS) >= ARRAYS_CACHE:
+        _ARRAYS.clear()
+    _ARRAYS[id(labels)] = (labels, array)
+    return labels, array
 
 
 class Adjacency(BaseModel):
