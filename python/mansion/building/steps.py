@@ -369,6 +369,11 @@ NARROW_WHY = "laid out narrower than its clear width"
 #: the program can spare it, its floor shared by the rooms beside it (:mod:`mansion.building.dissolve`).
 DISSOLVE = True
 
+#: Whether a floor about to be laid out again without rooms it could not fit (``RESOLVE_*``) is
+#: first mended as it is, and kept with all its rooms when the mends leave none below its
+#: minimum area or width.
+MEND_FIRST = True
+
 
 def _fits_better(
     layout: FloorLayout, graph: RoomGraph, unfit: dict[str, str], narrow: int, shape: tuple[int, int],
@@ -569,6 +574,11 @@ def solve_building_floor(
     return floor
 
 
+def _left_unfit_rooms(layout: FloorLayout, graph: RoomGraph, building_type: str | None) -> bool:
+    """Whether ``layout`` leaves a room below its minimum area, unusable or below its width."""
+    return bool(unfit_rooms(layout.rooms, graph) or narrow_rooms(layout.rooms, building_type))
+
+
 def _left_unfit(floor: Floor, building_type: str | None) -> tuple[int, int]:
     """(rooms of ``floor`` below their minimum area or unusable, those and the ones below their
     clear width)."""
@@ -615,6 +625,7 @@ def _solve_building_floor(
     settings = solver.get("settings")
     repairs = settings is not None and settings.repair
     asked = {i for r in program.requests if r.honoured for i in r.room_ids}
+    premended: tuple[FloorLayout, RoomGraph, list[str]] | None = None
     if repairs and planner is None and not program.load_bearing_walls:
         # Rooms the layout left below their minimum area or unusable: the floor is too tight for
         # them. Leave the ones a floor can do without out (a ward of several, with its ensuite)
@@ -647,6 +658,12 @@ def _solve_building_floor(
         same = bool(unfit) and not dropped
         shape = misshapen(layout.rooms) if (dropped or same) else (0, 0)  # what the new ones must match
         tries = RESOLVE_SAME_SEEDS if same else (RESOLVE_SEEDS if unfit else RESOLVE_NARROW_SEEDS) if dropped else 0
+        if tries and MEND_FIRST:
+            # the mends may bring every room of this layout to its minimums: then it is kept with
+            # all its rooms, and nothing is left out for what the mends would have mended
+            first = _mended_floor(layout, graph, program, asked, solver)
+            if not _left_unfit_rooms(first[0], first[1], program.building_type):
+                tries, premended = 0, first
         for k in range(tries):
             try:
                 # the floor's own seed first (fewer rooms), then others of its own
@@ -659,75 +676,10 @@ def _solve_building_floor(
                 left_out = [*left_out, *dropped]
                 break
     mended: list[str] = []
-    if repairs:
-        # What laying the floor out again could not mend (floors that carry walls, layouts
-        # refused, rooms a floor cannot leave out) is mended within one first-round region where
-        # walls are carried
-
-        def unfit_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
-            return unfit_rooms(lay.rooms, g)
-
-        # first cut such a room again inside the region it was cut from (nothing of the program
-        # is lost: mansion.building.recut), then merge or drop what that cannot mend
-        layout, mended = recut_unfit_rooms(
-            layout, graph, unfit_of, program.building_type,
-            min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
-        )
-        # a room still too small pushes its walls out into the rooms beside it, as far as its
-        # minimum needs, where they can give (mansion.building.sides)
-        layout = enlarge_rooms(
-            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
-            same_region=program.load_bearing_walls,
-        )
-        layout, graph, merged = merge_unfit_rooms(
-            layout, graph, unfit_of, program.building_type,
-            same_region=program.load_bearing_walls, keep=asked,
-        )
-        mended += merged
-        # and rooms below their clear width cut again as rectangles where a neighbour can give
-        layout = recut_narrow_rooms(
-            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
-            same_region=program.load_bearing_walls,
-        )
-        # then the strips of rooms still below their width handed to the rooms beside them
-        layout = hand_off_strips(
-            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
-            same_region=program.load_bearing_walls,
-        )
-        # then, in the order of NARROW_MENDS, the mends of what is still below its width
-        layout, graph, narrowed = mend_narrow(
-            layout, graph, program, keep=asked, min_contact=solver.get("min_contact", 1.0),
-        )
-        mended += narrowed
-        # last, passages 0.5 m wide (left by rounds laid out at 1 m rules) widened from a neighbour
-        layout = widen_passages(
-            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
-            same_region=program.load_bearing_walls,
-        )
-        # the width mends move walls: a room still below its minimum area may now find a
-        # rectangle the first recut could not (a dishwashing room beside its kitchen)
-        layout, recut_late = recut_unfit_rooms(
-            layout, graph, unfit_of, program.building_type,
-            min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
-        )
-        mended += recut_late
-        layout = enlarge_rooms(
-            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
-            same_region=program.load_bearing_walls,
-        )
-        if DISSOLVE:
-            # last, a room no mend brought to its width or minimum area is left out where the
-            # program can spare it, its floor shared by the rooms beside it
-            # (mansion.building.dissolve)
-            still = {
-                **dict.fromkeys(narrow_rooms(layout.rooms, program.building_type), NARROW_WHY),
-                **unfit_rooms(layout.rooms, graph),
-            }
-            layout, graph, dissolved = dissolve_unfit_rooms(
-                layout, graph, still, program.building_type, keep=asked,
-                min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
-            )
-            mended += dissolved
+    if premended is not None:
+        layout, graph, mended = premended
+    elif repairs:
+        layout, graph, mended = _mended_floor(layout, graph, program, asked, solver)
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
@@ -749,6 +701,83 @@ def _solve_building_floor(
     # below width 30 / 19 -> 28 / 17, below area 3 / 1 -> 2 / 1)
     return floor, repairs and seed_planner is None and text_planner is None
 
+
+
+def _mended_floor(
+    layout: FloorLayout, graph: RoomGraph, program: BuildingProgram, asked: set[str], solver: dict[str, Any],
+) -> tuple[FloorLayout, RoomGraph, list[str]]:
+    """The floor's mends, in order, on a solved ``layout``: the layout, the graph (rooms merged or
+    dissolved) and a relaxation note per change of the program."""
+    mended: list[str] = []
+    # What laying the floor out again could not mend (floors that carry walls, layouts
+    # refused, rooms a floor cannot leave out) is mended within one first-round region where
+    # walls are carried
+
+    def unfit_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
+        return unfit_rooms(lay.rooms, g)
+
+    # first cut such a room again inside the region it was cut from (nothing of the program
+    # is lost: mansion.building.recut), then merge or drop what that cannot mend
+    layout, mended = recut_unfit_rooms(
+        layout, graph, unfit_of, program.building_type,
+        min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+    )
+    # a room still too small pushes its walls out into the rooms beside it, as far as its
+    # minimum needs, where they can give (mansion.building.sides)
+    layout = enlarge_rooms(
+        layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+        same_region=program.load_bearing_walls,
+    )
+    layout, graph, merged = merge_unfit_rooms(
+        layout, graph, unfit_of, program.building_type,
+        same_region=program.load_bearing_walls, keep=asked,
+    )
+    mended += merged
+    # and rooms below their clear width cut again as rectangles where a neighbour can give
+    layout = recut_narrow_rooms(
+        layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+        same_region=program.load_bearing_walls,
+    )
+    # then the strips of rooms still below their width handed to the rooms beside them
+    layout = hand_off_strips(
+        layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+        same_region=program.load_bearing_walls,
+    )
+    # then, in the order of NARROW_MENDS, the mends of what is still below its width
+    layout, graph, narrowed = mend_narrow(
+        layout, graph, program, keep=asked, min_contact=solver.get("min_contact", 1.0),
+    )
+    mended += narrowed
+    # last, passages 0.5 m wide (left by rounds laid out at 1 m rules) widened from a neighbour
+    layout = widen_passages(
+        layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+        same_region=program.load_bearing_walls,
+    )
+    # the width mends move walls: a room still below its minimum area may now find a
+    # rectangle the first recut could not (a dishwashing room beside its kitchen)
+    layout, recut_late = recut_unfit_rooms(
+        layout, graph, unfit_of, program.building_type,
+        min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+    )
+    mended += recut_late
+    layout = enlarge_rooms(
+        layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+        same_region=program.load_bearing_walls,
+    )
+    if DISSOLVE:
+        # last, a room no mend brought to its width or minimum area is left out where the
+        # program can spare it, its floor shared by the rooms beside it
+        # (mansion.building.dissolve)
+        still = {
+            **dict.fromkeys(narrow_rooms(layout.rooms, program.building_type), NARROW_WHY),
+            **unfit_rooms(layout.rooms, graph),
+        }
+        layout, graph, dissolved = dissolve_unfit_rooms(
+            layout, graph, still, program.building_type, keep=asked,
+            min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+        )
+        mended += dissolved
+    return layout, graph, mended
 
 
 def mend_narrow(
