@@ -182,10 +182,10 @@ def test_sizes_in_feet_and_metres() -> None:
     assert sizes("The kitchen measures about ten feet by five feet.") == [("kitchen_2", round(10 * ft, 2), round(5 * ft, 2), None, True)]
     # the nouns "length" and "width" keep that order whichever comes first; the adjectives "long"
     # and "wide" do not ("3 feet long and 10 feet wide": 10 across)
-    assert sizes("The kitchen is 11 feet length and 3 feet width.") == [("kitchen_2", round(11 * ft, 2), round(3 * ft, 2), None, True)]
-    assert sizes("The kitchen is 4 feet width and 5 feet length.") == [("kitchen_2", round(4 * ft, 2), round(5 * ft, 2), None, True)]
-    assert sizes("The kitchen is 3 feet long and 10 feet wide.") == [("kitchen_2", round(10 * ft, 2), round(3 * ft, 2), None, True)]
-    assert sizes("The kitchen is 5ft wide and 10 feet long.") == [("kitchen_2", round(5 * ft, 2), round(10 * ft, 2), None, True)]
+    assert sizes("The kitchen is 12 feet length and 4 feet width.") == [("kitchen_2", round(12 * ft, 2), round(4 * ft, 2), None, True)]
+    assert sizes("The kitchen is 6 feet width and 9 feet length.") == [("kitchen_2", round(6 * ft, 2), round(9 * ft, 2), None, True)]
+    assert sizes("The kitchen is 4 feet long and 12 feet wide.") == [("kitchen_2", round(12 * ft, 2), round(4 * ft, 2), None, True)]
+    assert sizes("The kitchen is 6ft wide and 9 feet long.") == [("kitchen_2", round(6 * ft, 2), round(9 * ft, 2), None, True)]
     assert sizes("The kitchen is 10 feet in length and 7 feet in width.") == [("kitchen_2", round(10 * ft, 2), round(7 * ft, 2), None, True)]
     # with the words spelt out apart, too
     assert sizes("The kitchen is 10 feet in length, 7 feet in width.") == [("kitchen_2", round(10 * ft, 2), round(7 * ft, 2), None, True)]
@@ -1335,24 +1335,24 @@ def test_rooms_the_text_does_not_place_are_seeded_amid_their_neighbours_in_half_
 def test_between_a_list_of_rooms_each_on_its_side() -> None:
     # "between the R1 to the north, R2 to the east, ...": each listed room on its side of the
     # subject, the compass words none of the subject's own place
-    assert facts("The bathroom is centered between the kitchen to the north, balcony to the east and living room to the west.") == {
-        ("kitchen_2", "relation", "north_of", ("bathroom_3",)),
-        ("balcony_5", "relation", "east_of", ("bathroom_3",)),
-        ("living_room_0", "relation", "west_of", ("bathroom_3",)),
+    assert facts("Our kitchen sits between the balcony to its south, the bathroom to the west and the living room to the east.") == {
+        ("balcony_5", "relation", "south_of", ("kitchen_2",)),
+        ("bathroom_3", "relation", "west_of", ("kitchen_2",)),
+        ("living_room_0", "relation", "east_of", ("kitchen_2",)),
     }
     # a room at a part of the plan after "between" is not one of such a list: the subject is
     # still next to it
     assert ("bathroom_3", "relation", "next_to", ("common_room_4",)) in facts(
-        "The bathroom is on the north end between the common room on the northwest corner of the home, and the kitchen."
+        "The bathroom lies on the south end between the common room on the southwest corner of the house, and the kitchen."
     )
 
 
 def test_a_room_then_its_side_without_to() -> None:
     # "adjoined by R1 the south": a "to" left out in a list of the rooms around the subject
-    assert facts("The kitchen is in the northeast corner, adjoined by living room the south and the balcony to its east.") == {
-        ("kitchen_2", "position", "northeast", ()),
-        ("living_room_0", "relation", "south_of", ("kitchen_2",)),
-        ("balcony_5", "relation", "east_of", ("kitchen_2",)),
+    assert facts("The bathroom is in the southwest corner, bordered by the balcony to its west and master room the north.") == {
+        ("bathroom_3", "position", "southwest", ()),
+        ("balcony_5", "relation", "west_of", ("bathroom_3",)),
+        ("master_room_1", "relation", "north_of", ("bathroom_3",)),
     }
     # not after a verb: "the R1 is the south..." names no side of the subject
     assert ("living_room_0", "relation", "south_of", ("kitchen_2",)) not in facts(
@@ -1361,10 +1361,10 @@ def test_a_room_then_its_side_without_to() -> None:
 
 
 def test_a_listed_room_above_or_below_the_subject() -> None:
-    assert facts("The balcony is on the east side with the kitchen above and bathroom to the west.") == {
-        ("balcony_5", "position", "east", ()),
-        ("kitchen_2", "relation", "north_of", ("balcony_5",)),
-        ("bathroom_3", "relation", "west_of", ("balcony_5",)),
+    assert facts("The kitchen is on the west side, with the master room above and the bathroom to its east.") == {
+        ("kitchen_2", "position", "west", ()),
+        ("master_room_1", "relation", "north_of", ("kitchen_2",)),
+        ("bathroom_3", "relation", "east_of", ("kitchen_2",)),
     }
     assert ("common_room_4", "relation", "south_of", ("living_room_0",)) in facts(
         "The living room is on the west side, with the common room below."
@@ -1375,6 +1375,6 @@ def test_a_listed_room_above_or_below_the_subject() -> None:
 
 
 def test_a_room_inset_to_a_corner_of_the_subject_is_no_position_of_the_subject() -> None:
-    assert facts("The master room is in the southeast corner, with the bathroom inset to the northeast corner.") == {
-        ("master_room_1", "position", "southeast", ()),
+    assert facts("The master room takes the northwest corner, the bathroom being inset towards the southeast corner.") == {
+        ("master_room_1", "position", "northwest", ()),
     }

@@ -805,7 +805,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         others = rooms_in(m.group(1))
         if not others or not free(m.start(), m.end()):
             continue
-        # "adjoined by R1 the D:south and R2 to its D:east": a "to" left out, in a list of rooms
+        # "bordered by R1 the D:north and R2 to its D:west": a "to" left out, in a list of rooms
         # around the subject only
         if m.group("bare") and (
             not re.search(r"(?:\bby|\bwith|\band|,)\s+(?:the\s+|a\s+|an\s+)?$", text[: m.start()])
@@ -906,7 +906,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         r"\b(?:D:east\s+to\s+(?:the\s+)?D:west|D:west\s+to\s+(?:the\s+)?D:east|D:north\s+to\s+(?:the\s+)?D:south|D:south\s+to\s+(?:the\s+)?D:north)\s+direction\b",
         r"\b(?:its|it's|their|his|her)\s+(?:own\s+)?" + _DD + r"\s+" + _OWN_PART,
         # "with the R1 inset to the D:northeast corner": a corner of the subject another room takes
-        r"\bR\d+\s+(?:is\s+)?(?:inset|tucked|set)\s+(?:to|towards?)\s+(?:the\s+|its\s+)?" + _DD,
+        r"\bR\d+\s+(?:is\s+|being\s+)?(?:inset|tucked|set)\s+(?:to|towards?)\s+(?:the\s+|its\s+)?" + _DD,
         r"\b(?:(?:small|little|tiny|narrow)\s+(?:portions?|parts?|spaces?|areas?|sections?)|extensions?|alcoves?|nooks?"
         r"|knock\s*outs?|notch(?:es)?|cut\s*outs?)\b"
         r"(?:\s+(?:\w+|,)){0,4}?\s+" + _DD,
@@ -1038,8 +1038,8 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
         first, second = ((g or "").replace("in ", "").strip() for g in (m.group(3), m.group(6)))
         first, second = letters.get(first, first), letters.get(second, second)
         # a floor plan's dimensions are given across the drawing first, then up it ("10 x 12",
-        # "11 feet length and 3 feet width"); only the adjectives "wide" against "deep", "long",
-        # "tall" turn them round ("3 feet long and 10 feet wide": 10 across)
+        # "12 feet length and 4 feet width"); only the adjectives "wide" against "deep", "long",
+        # "tall" turn them round ("4 feet long and 12 feet wide": 12 across)
         swapped = first in ("deep", "depth", "tall", "high", "long") and second in ("wide", "width")
         w, d = (b, a) if swapped else (a, b)
         spans.append((m.start(), m.end()))
