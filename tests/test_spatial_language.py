@@ -172,13 +172,23 @@ def test_sizes_in_feet_and_metres() -> None:
         ("kitchen_2", round(12 * ft, 2), round(5 * ft, 2), None, True)
     ]
     assert sizes("The kitchen is 5 feet deep by 12 feet wide.") == [("kitchen_2", round(12 * ft, 2), round(5 * ft, 2), None, True)]
-    assert sizes("The kitchen is about 12' x 22'.") == [("kitchen_2", round(12 * ft, 2), round(22 * ft, 2), None, False)]
-    assert sizes("The kitchen size is 10*12 feet.") == [("kitchen_2", round(10 * ft, 2), round(12 * ft, 2), None, False)]
-    assert sizes("The kitchen is 3 m by 4.5 m.") == [("kitchen_2", 3.0, 4.5, None, False)]
+    # a drawing's dimensions are written across it first: "12' x 22'" is 12 east-west
+    assert sizes("The kitchen is about 12' x 22'.") == [("kitchen_2", round(12 * ft, 2), round(22 * ft, 2), None, True)]
+    assert sizes("The kitchen size is 10*12 feet.") == [("kitchen_2", round(10 * ft, 2), round(12 * ft, 2), None, True)]
+    assert sizes("The kitchen is 3 m by 4.5 m.") == [("kitchen_2", 3.0, 4.5, None, True)]
     assert sizes("The kitchen is 8 feet in width and 6 feet in length.") == [("kitchen_2", round(8 * ft, 2), round(6 * ft, 2), None, True)]
     assert sizes("The kitchen has a floor area of 144 square feet.") == [("kitchen_2", None, None, round(144 * ft * ft, 2), False)]
     assert sizes("The kitchen is 12 m2.") == [("kitchen_2", None, None, 12.0, False)]
-    assert sizes("The kitchen measures about ten feet by five feet.") == [("kitchen_2", round(10 * ft, 2), round(5 * ft, 2), None, False)]
+    assert sizes("The kitchen measures about ten feet by five feet.") == [("kitchen_2", round(10 * ft, 2), round(5 * ft, 2), None, True)]
+    # the nouns "length" and "width" keep that order whichever comes first; the adjectives "long"
+    # and "wide" do not ("3 feet long and 10 feet wide": 10 across)
+    assert sizes("The kitchen is 12 feet length and 4 feet width.") == [("kitchen_2", round(12 * ft, 2), round(4 * ft, 2), None, True)]
+    assert sizes("The kitchen is 6 feet width and 9 feet length.") == [("kitchen_2", round(6 * ft, 2), round(9 * ft, 2), None, True)]
+    assert sizes("The kitchen is 4 feet long and 12 feet wide.") == [("kitchen_2", round(12 * ft, 2), round(4 * ft, 2), None, True)]
+    assert sizes("The kitchen is 6ft wide and 9 feet long.") == [("kitchen_2", round(6 * ft, 2), round(9 * ft, 2), None, True)]
+    assert sizes("The kitchen is 10 feet in length and 7 feet in width.") == [("kitchen_2", round(10 * ft, 2), round(7 * ft, 2), None, True)]
+    # with the words spelt out apart, too
+    assert sizes("The kitchen is 10 feet in length, 7 feet in width.") == [("kitchen_2", round(10 * ft, 2), round(7 * ft, 2), None, True)]
 
 
 # -- naming rooms -------------------------------------------------------------------------------
@@ -522,8 +532,9 @@ def test_a_layout_whose_rooms_keep_their_stated_proportions_agrees_more() -> Non
     assert proportion(oriented, tall) == pytest.approx(PROPORTION_CAP) == pytest.approx(np.log(2))
     # within the cap the part is the log of the ratio of ratios: 6 : 2 drawn against 4 : 2 stated
     assert proportion("The kitchen is approximately 8 feet wide by 4 feet deep.", wide) == pytest.approx(np.log(1.5))
-    # "12' x 4'" does not: either way round agrees
-    assert proportion("The kitchen is about 12' x 4'.", tall) == pytest.approx(0.0)
+    # "12' x 4'" says it too (across the drawing first), and "4' x 12'" the other way
+    assert proportion("The kitchen is about 12' x 4'.", tall) == pytest.approx(PROPORTION_CAP)
+    assert proportion("The kitchen is about 4' x 12'.", tall) == pytest.approx(0.0)
     # a text without sizes says nothing about proportions
     assert proportion("The kitchen is in the south.", tall) == 0.0
 
@@ -949,7 +960,7 @@ def test_sizes_with_l_and_w_letters() -> None:
 
 def test_a_sentence_about_the_size_of_a_room_is_about_that_room() -> None:
     text = "The balcony is in the south. The approximate size of the kitchen is 12 by 6 feet. It is in the north."
-    assert sizes(text) == [("kitchen_2", 3.66, 1.83, None, False)]
+    assert sizes(text) == [("kitchen_2", 3.66, 1.83, None, True)]
     assert ("kitchen_2", "position", "north", ()) in facts(text)
     # not when another room follows at once ("The size of the kitchen is The living room is ...")
     assert ("living_room_0", "position", "centre", ()) in facts(
@@ -1125,7 +1136,7 @@ def test_numbered_rooms_without_a_type_are_the_bedrooms_and_comm_is_common() -> 
     }
     assert facts("Comm Room is to the north of the kitchen.") == {("common_room_4", "relation", "north_of", ("kitchen_2",))}
     # "the room 10 x 12 feet" is a size of the room described, not a room of its own
-    assert sizes("The kitchen is in the east. The size of the room 10 x 12 feet.") == [("kitchen_2", 3.05, 3.66, None, False)]
+    assert sizes("The kitchen is in the east. The size of the room 10 x 12 feet.") == [("kitchen_2", 3.05, 3.66, None, True)]
 
 
 def test_a_label_after_a_comma_a_line_from_end_to_end_and_the_very_wall() -> None:
@@ -1319,3 +1330,51 @@ def test_rooms_the_text_does_not_place_are_seeded_amid_their_neighbours_in_half_
     # left them, so that the layouts the choice weighs differ where the text says nothing
     assert all(v["unplaced_to_neighbours"] == (v["corner"] == 16.0) for v in VARIANTS)
     assert sum(v["unplaced_to_neighbours"] for v in VARIANTS) == len(VARIANTS) // 2
+
+
+def test_between_a_list_of_rooms_each_on_its_side() -> None:
+    # "between the R1 to the north, R2 to the east, ...": each listed room on its side of the
+    # subject, the compass words none of the subject's own place
+    assert facts("Our kitchen sits between the balcony to its south, the bathroom to the west and the living room to the east.") == {
+        ("balcony_5", "relation", "south_of", ("kitchen_2",)),
+        ("bathroom_3", "relation", "west_of", ("kitchen_2",)),
+        ("living_room_0", "relation", "east_of", ("kitchen_2",)),
+    }
+    # a room at a part of the plan after "between" is not one of such a list: the subject is
+    # still next to it
+    assert ("bathroom_3", "relation", "next_to", ("common_room_4",)) in facts(
+        "The bathroom lies on the south end between the common room on the southwest corner of the house, and the kitchen."
+    )
+
+
+def test_a_room_then_its_side_without_to() -> None:
+    # "adjoined by R1 the south": a "to" left out in a list of the rooms around the subject
+    assert facts("The bathroom is in the southwest corner, bordered by the balcony to its west and master room the north.") == {
+        ("bathroom_3", "position", "southwest", ()),
+        ("balcony_5", "relation", "west_of", ("bathroom_3",)),
+        ("master_room_1", "relation", "north_of", ("bathroom_3",)),
+    }
+    # not after a verb: "the R1 is the south..." names no side of the subject
+    assert ("living_room_0", "relation", "south_of", ("kitchen_2",)) not in facts(
+        "The kitchen is in the north. The living room is the southern room."
+    )
+
+
+def test_a_listed_room_above_or_below_the_subject() -> None:
+    assert facts("The kitchen is on the west side, with the master room above and the bathroom to its east.") == {
+        ("kitchen_2", "position", "west", ()),
+        ("master_room_1", "relation", "north_of", ("kitchen_2",)),
+        ("bathroom_3", "relation", "east_of", ("kitchen_2",)),
+    }
+    assert ("common_room_4", "relation", "south_of", ("living_room_0",)) in facts(
+        "The living room is on the west side, with the common room below."
+    )
+    # "above the R1" is the subject above it, as before
+    assert facts("The kitchen is above the bathroom.") == {("kitchen_2", "relation", "north_of", ("bathroom_3",))}
+
+
+
+def test_a_room_inset_to_a_corner_of_the_subject_is_no_position_of_the_subject() -> None:
+    assert facts("The master room takes the northwest corner, the bathroom being inset towards the southeast corner.") == {
+        ("master_room_1", "position", "northwest", ()),
+    }

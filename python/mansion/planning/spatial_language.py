@@ -752,6 +752,12 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     # 1. "between R1 and R2"
     for m in re.finditer(r"\b(?:in\s+)?between\s+(?:of\s+|in\s+)?(?:the\s+)?(" + _ROOMS + ")", text):
         others = rooms_in(m.group(1))
+        # "between the R1 to the D:north, R2 to the D:east, ...": a list of rooms each on its
+        # side of the subject (read below), not one room it is next to
+        # ("between the R1 on the D:northwest corner of the home, and R2" is a room between two)
+        side = re.match(r"\s+(?:is\s+)?(?:to|on|at)" + _ART + r"\s+D:\w+\b(?!(?:\s+" + _PART + r")?\s+(?:of|in)\s+(?:the\s+)?" + _PLACE + r")", text[m.end():])
+        if len(others) == 1 and side:
+            continue
         if others and free(m.start(), m.end()):
             # "R0 has a R1 on its D:north side, in between of R2 and R3": said of R1
             had = re.search(r"\b(?:has|have|contains|includes)\s+(?:a|an|the|one)?\s*R(\d+)\b[^R]*$", text[: m.start()])
@@ -792,12 +798,19 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     # "R1 on its D:right", "to the D:north is R1", "D:north is R1", "R1 D:below" (run-on style).
     pat_after = (
         r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|both))*"
-        r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r"(?:\s+both)?)?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
+        r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r"(?:\s+both)?|(?P<bare>\s+the))?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
         r"(?:\s+(?:side|end|edge|wall|corner|direction)(?!\s+of\b))?"
     )
     for m in re.finditer(pat_after, text):
         others = rooms_in(m.group(1))
         if not others or not free(m.start(), m.end()):
+            continue
+        # "bordered by R1 the D:north and R2 to its D:west": a "to" left out, in a list of rooms
+        # around the subject only
+        if m.group("bare") and (
+            not re.search(r"(?:\bby|\bwith|\band|,)\s+(?:the\s+|a\s+|an\s+)?$", text[: m.start()])
+            or m.start("bare") != m.end(1)
+        ):
             continue
         # "next to the R1 on the D:south end of the plan": a part of the plan, where the subject
         # is (unless R1 was listed, "with the R1 in the D:north part of the house", or is the
@@ -821,6 +834,13 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
                 if inside:
                     out.append(Statement(subject=o, kind="position", direction=d, text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
+    # "with the R1 above and R2 to the D:west": R1 north of the subject ("above R2" is read above)
+    for m in re.finditer(r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|sits|just|directly|immediately))*\s+(above|below|beneath|underneath)\b(?!\s+(?:the\s+|a\s+)?R\d)", text):
+        others = rooms_in(m.group(1))
+        if others and free(m.start(), m.end()):
+            d = "north" if m.group(2) == "above" else "south"
+            out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in others)
+            used.append((m.start(), m.end()))
     # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
     by_sides = r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")"
     pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
@@ -885,6 +905,8 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         # "at D:east to D:west direction": along that line, not at either end
         r"\b(?:D:east\s+to\s+(?:the\s+)?D:west|D:west\s+to\s+(?:the\s+)?D:east|D:north\s+to\s+(?:the\s+)?D:south|D:south\s+to\s+(?:the\s+)?D:north)\s+direction\b",
         r"\b(?:its|it's|their|his|her)\s+(?:own\s+)?" + _DD + r"\s+" + _OWN_PART,
+        # "with the R1 inset to the D:northeast corner": a corner of the subject another room takes
+        r"\bR\d+\s+(?:is\s+|being\s+)?(?:inset|tucked|set)\s+(?:to|towards?)\s+(?:the\s+|its\s+)?" + _DD,
         r"\b(?:(?:small|little|tiny|narrow)\s+(?:portions?|parts?|spaces?|areas?|sections?)|extensions?|alcoves?|nooks?"
         r"|knock\s*outs?|notch(?:es)?|cut\s*outs?)\b"
         r"(?:\s+(?:\w+|,)){0,4}?\s+" + _DD,
@@ -993,6 +1015,11 @@ def _unit(word: str | None, text: str) -> float:
     return _FEET
 
 
+#: Whether a width and depth given without words ("10 x 12", "ten feet by five feet") are read
+#: as across the plan (east-west) first, as a drawing's dimensions are written.
+ORIENT_BY_ORDER = True
+
+
 def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[Statement]:
     out: list[Statement] = []
     spans: list[tuple[int, int]] = []
@@ -1010,18 +1037,20 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
         letters = {"l": "long", "w": "wide"}
         first, second = ((g or "").replace("in ", "").strip() for g in (m.group(3), m.group(6)))
         first, second = letters.get(first, first), letters.get(second, second)
-        oriented = first in ("wide", "width") or second in ("deep", "depth", "tall", "high")
-        swapped = first in ("deep", "depth", "tall", "high", "long", "length") and second in ("wide", "width")
+        # a floor plan's dimensions are given across the drawing first, then up it ("10 x 12",
+        # "12 feet length and 4 feet width"); only the adjectives "wide" against "deep", "long",
+        # "tall" turn them round ("4 feet long and 12 feet wide": 12 across)
+        swapped = first in ("deep", "depth", "tall", "high", "long") and second in ("wide", "width")
         w, d = (b, a) if swapped else (a, b)
         spans.append((m.start(), m.end()))
-        out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=oriented or swapped, text=_plain(m.group(0), mentions)))
+        out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=ORIENT_BY_ORDER or bool(first or second), text=_plain(m.group(0), mentions)))
     if not out:
         # "8 feet in width and 6 feet in length", "10 feet width and 12 feet length"
         pair = re.search(_NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long)\b.{0,30}?" + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long|depth|deep)\b", text)
         if pair:
             a, b = float(pair.group(1)), float(pair.group(4))
             unit = _unit(pair.group(2) or pair.group(5), text)
-            w, d = (a, b) if pair.group(3).startswith("wid") else (b, a)
+            w, d = (a, b)
             spans.append((pair.start(), pair.end()))
             out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=True, text=_plain(pair.group(0), mentions)))
     for m in re.finditer(_NUM_RE + r"\s*(?:square|sq\.?|sqrt|sqr)\s*(feet|foot|ft|meters?|metres?|m)\b|" + _NUM_RE + r"\s*(sqft|sq\.?ft|ft2|ft²|m2|m²|sqm)\b", text):
