@@ -580,6 +580,30 @@ def test_a_floor_with_rooms_too_small_that_it_cannot_spare_is_laid_out_again_wit
     assert [n.split(" (")[0] for n in notes_again] == [n.split(" (")[0] for n in notes]
 
 
+def test_a_floor_the_mends_bring_to_its_minimums_keeps_every_room() -> None:
+    """Kindergarten 22 of the realism hundred lays its ground floor's first group room out at
+    27.5 m² of its 30 m². Laid out again without it, the floor loses the group room (and keeps a
+    sleep room below its width); mended as it is first (``steps.MEND_FIRST``), every room comes to
+    its minimums and the floor keeps them all, nothing left out."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(22)
+
+    def ground() -> tuple[set[str], int, list[str]]:
+        floor = generate_building(description, building_type=kind, floors=floors, seed=22).floors[0]
+        bad = set(steps.unfit_rooms(floor.layout.rooms, floor.graph)) | steps.narrow_rooms(floor.layout.rooms, kind)
+        return bad, len(floor.layout.rooms), [n for n in floor.relaxations if " left out" in n]
+
+    assert steps.MEND_FIRST
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "MEND_FIRST", False)
+        bad_out, rooms_out, left_out = ground()
+    assert any(n.startswith("group_room_1 left out") for n in left_out) and bad_out
+    bad, rooms, left = ground()
+    assert not bad and not left and rooms > rooms_out
+
+
 def test_load_bearing_off_for_public_buildings() -> None:
     b = generate_building("a three-storey library", seed=0)
     assert not b.program.load_bearing_walls

@@ -371,7 +371,13 @@ DISSOLVE = True
 
 #: Whether a floor about to be laid out again without rooms it could not fit (``RESOLVE_*``) is
 #: first mended as it is, and kept with all its rooms when the mends leave none below its
-#: minimum area or width.
+#: minimum area or width, or when the layout without rooms, mended too, leaves no fewer. The
+#: second layouts judge the layout before any mend, and left out rooms the mends would have
+#: brought to their minimums (kindergarten 22's group room at 27.5 m² of 30; hotel 12's three
+#: guest rooms a floor). Measured on the offline hundreds (seeds 0-99 / 100-199): rooms left out
+#: 116 / 173 -> 92 / 128, rooms 4,335 / 4,250 -> 4,362 / 4,281, below width 46 / 29 -> 45 / 28,
+#: the hubs' area over plan 4,391 -> 4,138 m² on the first, for 1.39 times the time of the
+#: passes off against 1.34 (``benches/python/bench_passes.py``, one run each, the same hour).
 MEND_FIRST = True
 
 
@@ -548,8 +554,8 @@ def solve_building_floor(
     width is laid out again whole, mends and all, under a seed of its own with a sixth of the
     candidates; the layout with fewer such rooms is kept (offline seeds; a floor that carries
     walls too, before the floors above follow it). Off by default for time: one relayout cut the
-    offline hundred's rooms below their width from 46 to 28 for 1.7 times the generation time of
-    the passes off, against 1.45.
+    offline hundred's rooms below their width from 45 to 27 for 1.6 times the generation time of
+    the passes off, against 1.4.
     """
     floor, again = _solve_building_floor(
         program, index, graph, below, seed, solver, seed_planner, description, drop_widths,
@@ -574,16 +580,16 @@ def solve_building_floor(
     return floor
 
 
-def _left_unfit_rooms(layout: FloorLayout, graph: RoomGraph, building_type: str | None) -> bool:
-    """Whether ``layout`` leaves a room below its minimum area, unusable or below its width."""
-    return bool(unfit_rooms(layout.rooms, graph) or narrow_rooms(layout.rooms, building_type))
+def _bad_counts(layout: FloorLayout, graph: RoomGraph, building_type: str | None) -> tuple[int, int]:
+    """(rooms of ``layout`` below their minimum area or unusable, those and the ones below their
+    clear width)."""
+    unfit = unfit_rooms(layout.rooms, graph)
+    return len(unfit), len(set(unfit) | narrow_rooms(layout.rooms, building_type))
 
 
 def _left_unfit(floor: Floor, building_type: str | None) -> tuple[int, int]:
-    """(rooms of ``floor`` below their minimum area or unusable, those and the ones below their
-    clear width)."""
-    unfit = unfit_rooms(floor.layout.rooms, floor.graph)
-    return len(unfit), len(set(unfit) | narrow_rooms(floor.layout.rooms, building_type))
+    """:func:`_bad_counts` of ``floor``."""
+    return _bad_counts(floor.layout, floor.graph, building_type)
 
 
 def _solve_building_floor(
@@ -626,6 +632,7 @@ def _solve_building_floor(
     repairs = settings is not None and settings.repair
     asked = {i for r in program.requests if r.honoured for i in r.room_ids}
     premended: tuple[FloorLayout, RoomGraph, list[str]] | None = None
+    relaid = False
     if repairs and planner is None and not program.load_bearing_walls:
         # Rooms the layout left below their minimum area or unusable: the floor is too tight for
         # them. Leave the ones a floor can do without out (a ward of several, with its ensuite)
@@ -660,10 +667,12 @@ def _solve_building_floor(
         tries = RESOLVE_SAME_SEEDS if same else (RESOLVE_SEEDS if unfit else RESOLVE_NARROW_SEEDS) if dropped else 0
         if tries and MEND_FIRST:
             # the mends may bring every room of this layout to its minimums: then it is kept with
-            # all its rooms, and nothing is left out for what the mends would have mended
-            first = _mended_floor(layout, graph, program, asked, solver)
-            if not _left_unfit_rooms(first[0], first[1], program.building_type):
-                tries, premended = 0, first
+            # all its rooms, and nothing is left out for what the mends would have mended; else
+            # it is kept if the layout without rooms, mended too, does no better (below)
+            premended = _mended_floor(layout, graph, program, asked, solver)
+            solved = (layout, graph, fp, rng_seed, attempts, relax, left_out)
+            if not any(_bad_counts(premended[0], premended[1], program.building_type)):
+                tries = 0
         for k in range(tries):
             try:
                 # the floor's own seed first (fewer rooms), then others of its own
@@ -674,12 +683,18 @@ def _solve_building_floor(
             if again is not None and _fits_better(again[0], again[1], unfit, len(narrow), shape, program):
                 layout, graph, fp, rng_seed, attempts, relax = again
                 left_out = [*left_out, *dropped]
+                relaid = True
                 break
     mended: list[str] = []
-    if premended is not None:
+    if premended is not None and not relaid:
         layout, graph, mended = premended
     elif repairs:
         layout, graph, mended = _mended_floor(layout, graph, program, asked, solver)
+        bt = program.building_type
+        if premended is not None and _bad_counts(*premended[:2], bt) <= _bad_counts(layout, graph, bt):
+            # the layout without rooms came out of its mends no better: keep every room
+            layout, graph, fp, rng_seed, attempts, relax, left_out = solved
+            layout, graph, mended = premended
     notes = {r.id: r.notes for r in floor_program.rooms}
     words: list[PositionWord] = []
     if text_planner is not None:
