@@ -51,7 +51,7 @@ from mansion.building.load_bearing import cut_parents, first_round_groups
 from mansion.building.merge import (
     DOOR_WIDTH, grid_adjacencies, mask_defects, may_receive, may_spare, rooms_from_grid,
 )
-from mansion.building.recut import Walls, _connected, _kept_walls, _passable, _walls, edge_grown
+from mansion.building.recut import Walls, _connected, _kept_walls, _least, _passable, _walls, edge_grown
 from mansion.models.graph import RoomEdge, RoomGraph, RoomNode
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import SANITARY_TYPES, design_key, room_design
@@ -239,8 +239,7 @@ def _cured(mask: np.ndarray, node: RoomNode, room_type: str, building_type: str 
     """Whether the room ``node`` (laid out as ``room_type``) holding the cells ``mask`` is at its
     width and minimum area, with a usable square."""
     found = mask_defects(mask, room_type, building_type, cell)
-    least = node.min_area if node.min_area is not None else room_design(node.room_type).min_area
-    return not found & {"narrow", "unusable"} and float(mask.sum()) * cell * cell + EPS >= least
+    return not found & {"narrow", "unusable"} and float(mask.sum()) * cell * cell + EPS >= _least(node)
 
 
 def _judged(

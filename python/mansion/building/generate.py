@@ -65,6 +65,13 @@ PROGRAM_ATTEMPTS = 4
 MAX_RELAYOUTS = 5
 
 
+def check_relayouts(relayouts: object) -> None:
+    """Raise :class:`InvalidInputError` unless ``relayouts`` is an integer from 0 to
+    :data:`MAX_RELAYOUTS`."""
+    if isinstance(relayouts, bool) or not isinstance(relayouts, int) or not 0 <= relayouts <= MAX_RELAYOUTS:
+        raise InvalidInputError(f"relayouts must be an integer from 0 to {MAX_RELAYOUTS}, got {relayouts!r}")
+
+
 def _footprint_outline(footprint: Footprint | str | os.PathLike[str] | None) -> Any:
     if footprint is None:
         return None
@@ -140,8 +147,7 @@ def generate_building(
         or not math.isfinite(min_width) or min_width <= 0
     ):
         raise InvalidInputError(f"min_width must be a positive number of metres or None, got {min_width!r}")
-    if isinstance(relayouts, bool) or not isinstance(relayouts, int) or not 0 <= relayouts <= MAX_RELAYOUTS:
-        raise InvalidInputError(f"relayouts must be an integer from 0 to {MAX_RELAYOUTS}, got {relayouts!r}")
+    check_relayouts(relayouts)
     if not isinstance(description, str) or not description.strip():
         raise InvalidInputError("the description is empty; say what to build")
     plan = get_planner(planner)

@@ -562,8 +562,8 @@ def solve_building_floor(
     )
     if not again or not relayouts:
         return floor
-    left = _left_unfit(floor, program.building_type)
-    quick = {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
+    left = _bad_counts(floor.layout, floor.graph, program.building_type)
+    quick = _quick(solver)
     for k in range(relayouts):
         if left == (0, 0):
             break
@@ -574,7 +574,7 @@ def solve_building_floor(
             )
         except InfeasibleLayoutError:
             continue
-        found = _left_unfit(other, program.building_type)
+        found = _bad_counts(other.layout, other.graph, program.building_type)
         if found < left:
             floor, left = other, found
     return floor
@@ -587,9 +587,10 @@ def _bad_counts(layout: FloorLayout, graph: RoomGraph, building_type: str | None
     return len(unfit), len(set(unfit) | narrow_rooms(layout.rooms, building_type))
 
 
-def _left_unfit(floor: Floor, building_type: str | None) -> tuple[int, int]:
-    """:func:`_bad_counts` of ``floor``."""
-    return _bad_counts(floor.layout, floor.graph, building_type)
+def _quick(solver: dict[str, Any]) -> dict[str, Any]:
+    """``solver`` with a :data:`RESOLVE_DIVISOR`-th of its candidates per retry: the options of a
+    floor laid out again (its second layouts, its relayouts)."""
+    return {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
 
 
 def _solve_building_floor(
@@ -659,7 +660,7 @@ def _solve_building_floor(
         fewer, dropped = leave_out(planned, spare, keep=asked) if (unfit or narrow) else (planned, [])
         # a sixth of the candidates per retry: with rooms out the floor has area to spare, and
         # the full batch cost the hundred 1.4 times its generation time
-        quick = {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
+        quick = _quick(solver)
         # a floor with rooms too small for it that it cannot spare is laid out again with all
         # its rooms, under seeds of its own
         same = bool(unfit) and not dropped

@@ -55,10 +55,9 @@ class DatasetSettings:
             raise InvalidInputError(f"max floor area must be within 20-2000 m², got {max_floor_area:g}")
         if seed < 0:
             raise InvalidInputError(f"seed must be >= 0, got {seed}")
-        from mansion.building.generate import MAX_RELAYOUTS
+        from mansion.building.generate import check_relayouts
 
-        if not 0 <= relayouts <= MAX_RELAYOUTS:
-            raise InvalidInputError(f"relayouts must be within 0-{MAX_RELAYOUTS}, got {relayouts}")
+        check_relayouts(relayouts)
         return cls(
             parse_mix(mix), parse_floors(floors), float(max_floor_area), seed, pictures, validate, relayouts,
         )

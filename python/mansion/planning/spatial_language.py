@@ -1050,9 +1050,8 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
         if pair:
             a, b = float(pair.group(1)), float(pair.group(4))
             unit = _unit(pair.group(2) or pair.group(5), text)
-            w, d = (a, b)
             spans.append((pair.start(), pair.end()))
-            out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=True, text=_plain(pair.group(0), mentions)))
+            out.append(Statement(subject=subj, kind="size", width=a * unit, depth=b * unit, oriented=True, text=_plain(pair.group(0), mentions)))
     for m in re.finditer(_NUM_RE + r"\s*(?:square|sq\.?|sqrt|sqr)\s*(feet|foot|ft|meters?|metres?|m)\b|" + _NUM_RE + r"\s*(sqft|sq\.?ft|ft2|ft²|m2|m²|sqm)\b", text):
         if any(not (m.end() <= a or m.start() >= b) for a, b in spans):
             continue
