@@ -79,3 +79,49 @@ def test_box_cover_is_the_box_and_the_covered_cells_of_it() -> None:
         sides = [1, 2, 3, 4]
         want = (*crop.shape, int(crop.sum()), [_core.covered_cells(crop, m) for m in sides])
         assert _core.box_cover(np.pad(mask, 2), sides) == want
+
+
+def _label_grids(count: int, seed: int) -> list[np.ndarray]:
+    """Random int32 label grids of 1 to 11 cells a side, labels -1 (no room) to 5 in blobs and
+    runs, some of them views that are not contiguous."""
+    rng = np.random.default_rng(seed)
+    out = []
+    for i in range(count):
+        h, w = rng.integers(1, 12, 2)
+        grid = rng.integers(-1, 6, (h, w)).astype(np.int32)
+        # runs: copy each cell from its left or lower neighbour often, so walls are long
+        for y in range(h):
+            for x in range(w):
+                if x and rng.random() < 0.5:
+                    grid[y, x] = grid[y, x - 1]
+                elif y and rng.random() < 0.4:
+                    grid[y, x] = grid[y - 1, x]
+        out.append(grid[::-1, ::2] if i % 3 == 0 else grid)
+    return out
+
+
+def test_pair_walls_are_what_adjacencies_measures_of_those_pairs() -> None:
+    for grid in _label_grids(400, 6):
+        all_pairs = {(a, b): (t, m) for a, b, t, m in _core.adjacencies(np.ascontiguousarray(grid))}
+        pairs = [(a, b) for a in range(-1, 7) for b in range(-1, 7)]
+        found = _core.pair_walls(grid, pairs)
+        assert found == [all_pairs.get((min(a, b), max(a, b)), (0, 0)) if a != b else (0, 0) for a, b in pairs]
+
+
+def test_cell_sums_are_the_python_loops_to_the_bit() -> None:
+    rng = np.random.default_rng(7)
+    for grid in _label_grids(300, 8):
+        ox, oy, s = float(rng.uniform(-50, 50)), float(rng.uniform(-50, 50)), float(rng.choice([0.25, 0.5, 0.3]))
+        count: dict[int, int] = {}
+        sums: dict[int, list[float]] = {}
+        for r, row in enumerate(grid.tolist()):
+            cy = oy + (r + 0.5) * s
+            for c, k in enumerate(row):
+                if k < 0:
+                    continue
+                acc = sums.setdefault(k, [0.0, 0.0])
+                acc[0] += ox + (c + 0.5) * s
+                acc[1] += cy
+                count[k] = count.get(k, 0) + 1
+        want = [(k, count[k], sums[k][0], sums[k][1]) for k in sorted(count)]
+        assert _core.cell_sums(grid, ox, oy, s) == want  # exact floats, not approximately

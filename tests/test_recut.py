@@ -584,3 +584,45 @@ HHHHHHHHH
     tight = {**names, "C": ("cloakroom", "area", "cloakroom", 3.5)}
     layout2 = layout_of(picture, tight)
     assert widen_passages(layout2, graph_of(tight, [("hall", "stair_1"), ("hall", "cloakroom")]), "office") == layout2
+
+
+def test_walls_hold_is_the_whole_grids_walls_test() -> None:
+    """recut.walls_hold (the core measuring only the pairs asked) against the test it replaced:
+    every kept relation's wall by :func:`recut._walls`, then a door's width between the room and
+    the room that gave, on random label grids and relations."""
+    import numpy as np
+
+    from mansion import _core
+    from mansion.building.merge import DOOR_WIDTH
+    from mansion.building.recut import EPS, _walls, held_walls, walls_hold
+
+    rng = np.random.default_rng(11)
+    ids = ["a", "b", "c", "d", "e", "f"]
+    agree = {True: 0, False: 0}
+    for _ in range(600):
+        h, w = (int(v) for v in rng.integers(2, 10, 2))
+        grid = rng.integers(-1, len(ids), (h, w)).astype(np.int32)
+        for y in range(h):
+            for x in range(1, w):
+                if rng.random() < 0.6:
+                    grid[y, x] = grid[y, x - 1]
+        cell = float(rng.choice([0.5, 0.25]))
+        min_contact = float(rng.choice([0.5, 1.0]))
+        # the room and the room that gave mostly beside each other, the relations kept mostly
+        # walls the grid has, each held to about what it has
+        touching = [(ids[a], ids[b], t * cell, m * cell) for a, b, t, m in _core.adjacencies(grid)]
+        pick = touching[int(rng.integers(len(touching)))] if touching and rng.random() < 0.8 else None
+        room, up = pick[:2] if pick else (str(v) for v in rng.choice(ids, 2, replace=False))
+        names = ids + ["ghost"] if rng.random() < 0.1 else ids
+        keep = [
+            (s, t, m * float(rng.choice([0.5, 1.0, 1.5])), c * float(rng.choice([0.5, 1.0, 1.5])))
+            for s, t, c, m in touching if rng.random() < 0.4
+        ] + [
+            (str(rng.choice(names)), str(rng.choice(names)), float(rng.choice([0.5, 1.0])), float(rng.choice([0.5, 1.0])))
+            for _ in range(int(rng.integers(0, 2)))
+        ]
+        walls = _walls(grid, ids, cell, keep, min_contact)
+        old = walls is not None and walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS >= DOOR_WIDTH
+        assert walls_hold(grid, held_walls(ids, keep, room, up), cell, min_contact) == old
+        agree[old] += 1
+    assert min(agree.values()) > 25  # both outcomes were tried

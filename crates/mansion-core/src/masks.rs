@@ -123,6 +123,65 @@ pub fn windows(
     out
 }
 
+/// (shared cell edges, longest straight run of them) of each pair of labels in `pairs`, in the
+/// label grid `labels` (row-major, `h` rows of `w`, negative for no room): what
+/// [`crate::solve::label_adjacencies`] measures of those pairs, without the rest of the grid's
+/// pairs; (0, 0) for a pair that shares no wall or names one label twice. The floor's mends ask
+/// it of tens of thousands of candidate grids, each for the few walls they must keep.
+pub fn pair_walls(labels: &[i32], w: usize, h: usize, pairs: &[(i32, i32)]) -> Vec<(u32, u32)> {
+    let keys: Vec<(i32, i32)> = pairs.iter().map(|&(a, b)| (a.min(b), a.max(b))).collect();
+    let mut acc = vec![(0u32, 0u32); keys.len()];
+    let valid = |l: i32| l >= 0 && (l as usize) < crate::grid::MAX_ROOMS;
+    let mut scan = |line: &mut dyn Iterator<Item = (i32, i32)>| {
+        let mut prev: Option<(i32, i32)> = None;
+        let mut run = 0u32;
+        for (a, b) in line {
+            if a == b || !valid(a) || !valid(b) {
+                prev = None;
+                continue;
+            }
+            let key = (a.min(b), a.max(b));
+            run = if prev == Some(key) { run + 1 } else { 1 };
+            prev = Some(key);
+            for (k, e) in keys.iter().zip(acc.iter_mut()) {
+                if *k == key {
+                    e.0 += 1;
+                    e.1 = e.1.max(run);
+                }
+            }
+        }
+    };
+    for y in 0..h.saturating_sub(1) {
+        scan(&mut (0..w).map(|x| (labels[y * w + x], labels[(y + 1) * w + x])));
+    }
+    for x in 0..w.saturating_sub(1) {
+        scan(&mut (0..h).map(|y| (labels[y * w + x], labels[y * w + x + 1])));
+    }
+    acc
+}
+
+/// Per label of `labels` (row-major, `h` rows of `w`, negative for no room), in label order:
+/// (label, cells, sum of the cells' centres' x, of their y) with cell (row r, column c) centred
+/// at (`ox` + (c + 0.5) `s`, `oy` + (r + 0.5) `s`), summed row by row, left to right: the sums
+/// the floor's mends redraw a room's centroid from, to the last bit of a Python loop's.
+pub fn cell_sums(labels: &[i32], w: usize, h: usize, ox: f64, oy: f64, s: f64) -> Vec<(i32, usize, f64, f64)> {
+    let mut acc: std::collections::BTreeMap<i32, (usize, f64, f64)> = std::collections::BTreeMap::new();
+    for r in 0..h {
+        let cy = oy + (r as f64 + 0.5) * s;
+        for c in 0..w {
+            let k = labels[r * w + c];
+            if k < 0 {
+                continue;
+            }
+            let e = acc.entry(k).or_insert((0, 0.0, 0.0));
+            e.1 += ox + (c as f64 + 0.5) * s;
+            e.2 += cy;
+            e.0 += 1;
+        }
+    }
+    acc.into_iter().map(|(k, (n, x, y))| (k, n, x, y)).collect()
+}
+
 /// Prefix sums of the cells of `mask`, `h + 1` rows of `w + 1`: entry (y, x) counts the cells
 /// below row y and left of column x.
 fn prefix_sums(mask: &[bool], w: usize, h: usize) -> Vec<u32> {
@@ -185,6 +244,55 @@ fn covered(fits: &[bool], w: usize, h: usize, m: usize) -> Vec<bool> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn pair_walls_are_what_label_adjacencies_measures() {
+        use crate::grid::{Grid, OUTSIDE};
+        // labels 0..4 and holes, rows of varied runs
+        let rows: [&[i32]; 5] = [
+            &[0, 0, 1, 1, -1, 2],
+            &[0, 0, 1, 1, 2, 2],
+            &[3, 0, 0, 1, 2, 2],
+            &[3, 3, 3, 1, 1, -1],
+            &[3, 3, 4, 4, 4, 4],
+        ];
+        let (w, h) = (6, 5);
+        let labels: Vec<i32> = rows.iter().flat_map(|r| r.iter().copied()).collect();
+        let mut g = Grid::new(w, h, OUTSIDE);
+        for (i, &l) in labels.iter().enumerate() {
+            if l >= 0 {
+                g.set(i % w, i / w, l as crate::grid::Label);
+            }
+        }
+        let all = crate::solve::label_adjacencies(&g, crate::grid::MAX_ROOMS);
+        let mut pairs: Vec<(i32, i32)> = Vec::new();
+        for a in 0..5 {
+            for b in 0..5 {
+                pairs.push((a, b));
+            }
+        }
+        let got = pair_walls(&labels, w, h, &pairs);
+        for (&(a, b), &found) in pairs.iter().zip(&got) {
+            let want = all
+                .iter()
+                .find(|&&(x, y, _, _)| (x as i32, y as i32) == (a.min(b), a.max(b)) && a != b)
+                .map_or((0, 0), |&(_, _, t, l)| (t, l));
+            assert_eq!(found, want, "pair ({a}, {b})");
+        }
+        assert!(got.iter().any(|&(t, l)| t > 1 && l > 1));
+        assert_eq!(pair_walls(&labels, w, h, &[]), vec![]);
+    }
+
+    #[test]
+    fn cell_sums_count_and_sum_each_labels_centres() {
+        let labels = [0, 1, -1, 1, 1, 0];
+        let got = cell_sums(&labels, 3, 2, 10.0, 20.0, 0.5);
+        assert_eq!(
+            got,
+            vec![(0, 2, 10.25 + 11.25, 20.25 + 20.75), (1, 3, 10.75 + 10.25 + 10.75, 20.25 + 20.75 + 20.75)]
+        );
+        assert!(cell_sums(&[-1, -1], 2, 1, 0.0, 0.0, 1.0).is_empty());
+    }
 
     #[test]
     fn windows_lie_inside_the_region_and_count_the_rooms_cells() {

@@ -233,6 +233,39 @@ fn mask_passable(py: Python<'_>, mask: PyReadonlyArray2<'_, bool>) -> PyResult<(
     guarded(py, move || Ok(mansion_core::masks::passable(&cells, w, h)))
 }
 
+/// An int32 label grid as mansion-core's masks take it: row-major cells, width, height.
+fn label_cells(labels: &PyReadonlyArray2<'_, i32>) -> (Vec<i32>, usize, usize) {
+    let a = labels.as_array();
+    let (h, w) = (a.shape()[0], a.shape()[1]);
+    (a.iter().copied().collect(), w, h)
+}
+
+/// (shared cell edges, longest straight run of them) of each pair of labels in `pairs` in an
+/// int32 label grid (negative = no room), as `adjacencies` measures them; (0, 0) where none.
+#[pyfunction]
+fn pair_walls(
+    py: Python<'_>,
+    labels: PyReadonlyArray2<'_, i32>,
+    pairs: Vec<(i32, i32)>,
+) -> PyResult<Vec<(u32, u32)>> {
+    let (cells, w, h) = label_cells(&labels);
+    guarded(py, move || Ok(mansion_core::masks::pair_walls(&cells, w, h, &pairs)))
+}
+
+/// Per label of an int32 label grid, in label order: (label, cells, sum of the cells' centres'
+/// x, of their y), cell (r, c) centred at (ox + (c + 0.5) s, oy + (r + 0.5) s), summed row by row.
+#[pyfunction]
+fn cell_sums(
+    py: Python<'_>,
+    labels: PyReadonlyArray2<'_, i32>,
+    ox: f64,
+    oy: f64,
+    s: f64,
+) -> PyResult<Vec<(i32, usize, f64, f64)>> {
+    let (cells, w, h) = label_cells(&labels);
+    guarded(py, move || Ok(mansion_core::masks::cell_sums(&cells, w, h, ox, oy, s)))
+}
+
 /// (h, w, row, column, cells of `own` held) of each rectangle of cells inside `region` (both
 /// boolean masks of one shape) within its box `(r0, r1, c0, c1)` (rows r0..r1, columns c0..c1):
 /// sides at least `side`, `lo` to `hi` cells, long side at most `stretch` times the short; an
@@ -458,6 +491,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(mask_pieces, m)?)?;
     m.add_function(wrap_pyfunction!(mask_passable, m)?)?;
     m.add_function(wrap_pyfunction!(mask_windows, m)?)?;
+    m.add_function(wrap_pyfunction!(pair_walls, m)?)?;
+    m.add_function(wrap_pyfunction!(cell_sums, m)?)?;
     m.add_function(wrap_pyfunction!(grow_candidates, m)?)?;
     m.add_function(wrap_pyfunction!(place_room, m)?)?;
     m.add_function(wrap_pyfunction!(place_rooms, m)?)?;

@@ -175,17 +175,11 @@ def rooms_from_grid(
             pieces[k] = (area, ring, holes)
     # the cells' centres summed in the core's order (row by row, left to right) so a room the
     # merge leaves alone keeps its centroid to the last bit
+    # (by the core, which adds them in the same order)
     count: dict[int, int] = {}
-    sums: dict[int, list[float]] = {}
-    for r, row in enumerate(labels.tolist()):
-        cy = oy + (r + 0.5) * s
-        for c, k in enumerate(row):
-            if k < 0:
-                continue
-            acc = sums.setdefault(k, [0.0, 0.0])
-            acc[0] += ox + (c + 0.5) * s
-            acc[1] += cy
-            count[k] = count.get(k, 0) + 1
+    sums: dict[int, tuple[float, float]] = {}
+    for k, n, sx, sy in _core.cell_sums(labels.astype(np.int32), float(ox), float(oy), float(s)):
+        count[k], sums[k] = n, (sx, sy)
     rooms: list[LayoutRoom] = []
     for k, rid in enumerate(grid.ids):
         if k not in pieces:

@@ -634,6 +634,7 @@ def _best_recut(
     sub, sub_region = labels[y0:y1, x0:x1], region[y0:y1, x0:x1]
     # the region all ``up``'s, and its cells (each rectangle lies inside the region)
     given, region_cells = np.where(sub_region, k_up, sub).astype(np.int32), int(sub_region.sum())
+    held = held_walls(ids, keep, room, up)
     best: tuple[tuple[float, float, int, int], np.ndarray] | None = None
     for first, miss, y, x, h, w in shapes[:MAX_NARROW_TRIED if narrow else MAX_TRIED]:
         if best is not None and first > best[0][0] + EPS:
@@ -646,8 +647,7 @@ def _best_recut(
         rest = sub_region.copy()
         rest[y - y0:y - y0 + h, x - x0:x - x0 + w] = False
         # the shared walls first (measured by the core, the cheapest test), then the pieces
-        walls = _walls(new, ids, cell, keep, min_contact)
-        if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
+        if not walls_hold(new, held, cell, min_contact):
             continue
         if not _rest_holds(rest, cell, rooms[up].room_type, up_defects, up_passable, building_type):
             continue
@@ -765,6 +765,7 @@ def _best_suite(
     inner_own = (labels == k_inner)[y0:y1, x0:x1]
     # the region all ``up``'s, and its cells (each rectangle lies inside the region)
     given, region_cells = np.where(sub_region, k_up, sub).astype(np.int32), int(sub_region.sum())
+    held = held_walls(ids, keep, room, up)
     best: tuple[tuple[float, float], np.ndarray] | None = None
     for first, miss, y, x, h, w in shapes[:MAX_SUITE_TRIED]:
         if best is not None and first > best[0][0]:
@@ -791,8 +792,7 @@ def _best_suite(
             new = given.copy()
             new[y - y0:y - y0 + h, x - x0:x - x0 + w] = k_room
             new[ey - y0:ey - y0 + eh, ex - x0:ex - x0 + ew] = k_inner
-            walls = _walls(new, ids, cell, keep, min_contact)
-            if walls is None or walls.get(frozenset((room, up)), (0.0, 0.0))[1] + EPS < DOOR_WIDTH:
+            if not walls_hold(new, held, cell, min_contact):
                 continue
             own = new == k_room
             if any(a > b for a, b in zip(_passable(own), passable[room])):
@@ -858,6 +858,51 @@ def _walls(
         if not wall_kept(walls.pair(s, t), longest, contact, min_contact):
             return None
     return walls
+
+
+#: What :func:`walls_hold` asks of a label grid: the pairs of labels to measure (the core's
+#: :func:`pair_walls`), the (longest, contact) each of the kept relations had (None for the
+#: pair whose door's wall is asked), or None when a relation can never hold (a room not on the
+#: grid).
+Held = tuple[list[tuple[int, int]], list[tuple[float, float] | None]] | None
+
+
+def held_walls(ids: list[str], keep: list[tuple[str, str, float, float]], room: str, up: str) -> Held:
+    """:data:`Held` of a recut of ``room`` with ``up`` on a grid of labels ``ids``: each relation
+    of ``keep`` (its rooms, the longest wall and the contact they had) and a door's width of wall
+    between ``room`` and ``up`` (:func:`walls_hold`)."""
+    where: dict[str, int] = {}
+    for k, rid in enumerate(ids):
+        where.setdefault(rid, k)  # the first of a repeated id, as list.index finds it
+    pairs: list[tuple[int, int]] = []
+    had: list[tuple[float, float] | None] = []
+    for s, t, longest, contact in keep:
+        if s == t or s not in where or t not in where:
+            return None  # Walls.pair: no wall, so never kept
+        pairs.append((where[s], where[t]))
+        had.append((longest, contact))
+    pairs.append((where[room], where[up]))
+    had.append(None)
+    return pairs, had
+
+
+def walls_hold(new: np.ndarray, held: Held, cell: float, min_contact: float) -> bool:
+    """Whether label grid ``new`` keeps the walls ``held`` names (:func:`held_walls`): every kept
+    relation's (:func:`wall_kept`) and a door's width (:data:`DOOR_WIDTH`) of wall between the
+    room recut and the room that gave. The same test as :func:`_walls` and its ``(room, up)`` look-up, with
+    the core measuring only those pairs (the whole grid's walls, read into a dict per candidate,
+    took most of the recuts' time)."""
+    if held is None:
+        return False
+    pairs, had = held
+    found = _core.pair_walls(np.asarray(new, dtype=np.int32), pairs)
+    for (total, longest), was in zip(found, had):
+        if was is None:
+            if longest * cell + EPS < DOOR_WIDTH:
+                return False
+        elif not wall_kept((total * cell, longest * cell) if total else None, was[0], was[1], min_contact):
+            return False
+    return True
 
 
 class Walls:

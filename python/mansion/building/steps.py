@@ -565,7 +565,7 @@ def solve_building_floor(
     if not again or not relayouts:
         return floor
     left = _bad_counts(floor.layout, floor.graph, program.building_type)
-    quick = _quick(solver)
+    quick = _relayout_options(solver)
     for k in range(relayouts):
         if left == (0, 0):
             break
@@ -595,18 +595,32 @@ def _bad_counts(layout: FloorLayout, graph: RoomGraph, building_type: str | None
 
 
 def _quick(solver: dict[str, Any]) -> dict[str, Any]:
-    """``solver`` with a :data:`RESOLVE_DIVISOR`-th of its candidates per retry, and of its Monte
-    Carlo fallback's (``SolverSettings.fallback_samples``): the options of a floor laid out again
-    (its second layouts, its relayouts). A round every retry fails draws the fallback's 400
-    candidates whatever the batch, in batches of it: on the offline hundred with one relayout
-    (seeds 0-99), the quick layouts' solves took 5.0 s of process time, 2.2 s of it in the 14 that
-    failed; with a sixth of the fallback 3.9 s, the same layouts (the four rounds the fallback won,
-    it won within its first sixth)."""
-    quick = {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
+    """``solver`` with a :data:`RESOLVE_DIVISOR`-th of its candidates per retry: the options of a
+    floor laid out again (its second layouts, its relayouts)."""
+    return {**solver, "batch": max(1, solver.get("batch", 100) // RESOLVE_DIVISOR)}
+
+
+#: Backtracks a relayout's solve may spend at most (``SolverSettings.max_backtracks``; None: the
+#: floor's own).
+RELAYOUT_BACKTRACKS: int | None = None
+
+
+def _relayout_options(solver: dict[str, Any]) -> dict[str, Any]:
+    """The options of a relayout (:func:`solve_building_floor`): :func:`_quick`'s, with a
+    :data:`RESOLVE_DIVISOR`-th of the Monte Carlo fallback's candidates too
+    (``SolverSettings.fallback_samples``) and at most :data:`RELAYOUT_BACKTRACKS` backtracks. A
+    round every retry fails draws the fallback's 400 candidates whatever the batch, in batches of
+    it: on the offline hundred (seeds 0-99) the quick layouts' solves took 5.0 s of process time,
+    2.2 s of it in the 14 that failed, and 3.9 s with a sixth of the fallback (of the four rounds
+    the fallback won, all within its first sixth; of the 200 offline buildings, three won later
+    than that)."""
+    quick = _quick(solver)
     settings = solver.get("settings")
     if settings is not None:
-        samples = settings.fallback_samples // RESOLVE_DIVISOR
-        quick["settings"] = settings.model_copy(update={"fallback_samples": samples})
+        update: dict[str, Any] = {"fallback_samples": settings.fallback_samples // RESOLVE_DIVISOR}
+        if RELAYOUT_BACKTRACKS is not None:
+            update["max_backtracks"] = min(settings.max_backtracks, RELAYOUT_BACKTRACKS)
+        quick["settings"] = settings.model_copy(update=update)
     return quick
 
 
