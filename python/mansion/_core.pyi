@@ -6,7 +6,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "adjacencies", "covered_cells", "box_cover", "mask_pieces", "mask_passable", "mask_windows", "grow_candidates", "place_room", "place_rooms"]
+__all__ = ["__version__", "solve_floor", "rasterise", "mask_outline", "vectorise", "adjacencies", "covered_cells", "box_cover", "mask_pieces", "mask_passable", "mask_windows", "pair_walls", "cell_sums", "grow_candidates", "place_room", "place_rooms"]
 
 __version__: str
 
@@ -63,6 +63,14 @@ def mask_windows(
     """(h, w, row, column, cells of own held) of each rectangle of cells inside region within its
     box (r0, r1, c0, c1): sides at least side, lo to hi cells, long side at most stretch times
     the short; an int64 array (n, 5)."""
+
+def pair_walls(labels: npt.NDArray[np.int32], pairs: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    """(shared cell edges, longest straight run of them) of each pair of labels in pairs in an
+    int32 label grid (negative = no room), as adjacencies measures them; (0, 0) where none."""
+
+def cell_sums(labels: npt.NDArray[np.int32], ox: float, oy: float, s: float) -> list[tuple[int, int, float, float]]:
+    """Per label of an int32 label grid, in label order: (label, cells, sum of the cells' centres'
+    x, of their y), cell (r, c) centred at (ox + (c + 0.5) s, oy + (r + 0.5) s), summed row by row."""
 
 def grow_candidates(
     labels: npt.NDArray[np.int32],

@@ -87,11 +87,31 @@ def grid_adjacencies(labels: np.ndarray, ids: list[str], cell: float) -> list[Ad
     ]
 
 
+#: :func:`shape_defects` of the shapes measured, by the shape object (kept with the entry, so its
+#: id is not reused while the entry stands), at most this many (then the cache starts afresh):
+#: the recuts measure the same room and the room that gives for each donor and each room
+#: beside, most of them drawn once (:func:`mansion.building.outlines.outline`).
+DEFECTS_CACHE = 1 << 12
+_DEFECTS: dict[tuple[int, str, str | None], tuple[Polygon, frozenset[str]]] = {}
+
+
 def shape_defects(shape: Polygon, room_type: str, building_type: str | None) -> set[str]:
     """``mansion eval realism``'s defects of one room's shape: "elongated" (not circulation),
     "sliver", "narrow" (below its clear width: circulation's its building's corridor width, else
     the design table's, :func:`~mansion.models.room_design.needed_width`) and "unusable" (no
-    usable square)."""
+    usable square). Shapely's shapes do not change, so each is measured once (a new set each
+    call: callers may change theirs)."""
+    key = (id(shape), room_type, building_type)
+    found = _DEFECTS.get(key)
+    if found is None or found[0] is not shape:
+        if len(_DEFECTS) >= DEFECTS_CACHE:
+            _DEFECTS.clear()
+        found = _DEFECTS[key] = (shape, frozenset(_shape_defects(shape, room_type, building_type)))
+    return set(found[1])
+
+
+def _shape_defects(shape: Polygon, room_type: str, building_type: str | None) -> set[str]:
+    """:func:`shape_defects`, measured."""
     design = room_design(room_type)
     out: set[str] = set()
     if not design.circulation and box_aspect(shape) > ELONGATED_ASPECT:

@@ -577,9 +577,18 @@ def solve_building_floor(
         except InfeasibleLayoutError:
             continue
         found = _bad_counts(other.layout, other.graph, program.building_type)
-        if found < left:
+        if found < left and (
+            not RELAYOUT_SHAPES
+            or found[1] + sum(misshapen(other.layout.rooms)) < left[1] + sum(misshapen(floor.layout.rooms))
+        ):
             floor, left = other, found
     return floor
+
+
+#: Whether a relayout is kept only when it also leaves fewer rooms below their area or width,
+#: elongated or slivers (:func:`misshapen`) in all than the layout it replaces: not one that
+#: trades a room below its width for an elongated one.
+RELAYOUT_SHAPES = True
 
 
 #: Whether a relayout climbs the ladder of attempts from the rung that laid the floor out (else
