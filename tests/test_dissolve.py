@@ -212,6 +212,24 @@ def test_a_floor_that_carries_walls_is_laid_out_again_and_the_floors_above_follo
             assert walls and above.footprint.fixed_walls == walls
 
 
+def test_a_relayout_draws_a_sixth_of_the_candidates_and_of_the_fallback_without_backtracks() -> None:
+    from mansion.building import steps
+
+    solver = steps.solver_options()
+    quick, relayout = steps._quick(solver), steps._relayout_options(solver)
+    assert quick["batch"] == relayout["batch"] == solver["batch"] // steps.RESOLVE_DIVISOR
+    # the second layouts keep the solver's fallback and backtracks (the default's buildings)
+    assert quick["settings"] == solver["settings"]
+    assert relayout["settings"].fallback_samples == solver["settings"].fallback_samples // steps.RESOLVE_DIVISOR
+    assert relayout["settings"].max_backtracks == steps.RELAYOUT_BACKTRACKS == 0
+    assert relayout["settings"].model_copy(update={
+        "fallback_samples": solver["settings"].fallback_samples, "max_backtracks": solver["settings"].max_backtracks,
+    }) == solver["settings"]
+    # no width rules, no settings: only the batch
+    bare = steps.solver_options(min_width=None)
+    assert steps._relayout_options(bare) == {**bare, "batch": quick["batch"]}
+
+
 @pytest.mark.parametrize("bad", [-1, 6, True, 1.0, "1"])
 def test_relayouts_out_of_range_is_a_typed_error(bad: object) -> None:
     from mansion.exceptions import InvalidInputError

@@ -554,10 +554,12 @@ def solve_building_floor(
 
     ``relayouts``: times a floor the mends leave with rooms below their minimum area or clear
     width is laid out again whole, mends and all, under a seed of its own with a sixth of the
-    candidates; the layout with fewer such rooms is kept (offline seeds; a floor that carries
-    walls too, before the floors above follow it). Off by default for time: one relayout cut the
-    offline hundred's rooms below their width from 45 to 27 for 1.6 times the generation time of
-    the passes off, against 1.4.
+    candidates (and of its fallback, no backtracks: :func:`_relayout_options`), from the rung of
+    the ladder that laid the floor out; the layout with fewer such rooms is kept where it also
+    leaves fewer rooms bad, elongated or slivers in all (:data:`RELAYOUT_SHAPES`; offline seeds;
+    a floor that carries walls too, before the floors above follow it). Off by default for time:
+    one relayout cuts the offline hundred's rooms below their width from 45 to 27 for 1.52 times
+    the generation time of the passes off, against 1.38 (the issue's bound is 1.5).
     """
     floor, again = _solve_building_floor(
         program, index, graph, below, seed, solver, seed_planner, description, drop_widths,
@@ -622,10 +624,11 @@ def _relayout_options(solver: dict[str, Any]) -> dict[str, Any]:
     :data:`RESOLVE_DIVISOR`-th of the Monte Carlo fallback's candidates too
     (``SolverSettings.fallback_samples``) and at most :data:`RELAYOUT_BACKTRACKS` backtracks. A
     round every retry fails draws the fallback's 400 candidates whatever the batch, in batches of
-    it: on the offline hundred (seeds 0-99) the quick layouts' solves took 5.0 s of process time,
-    2.2 s of it in the 14 that failed, and 3.9 s with a sixth of the fallback (of the four rounds
-    the fallback won, all within its first sixth; of the 200 offline buildings, three won later
-    than that)."""
+    it: on the offline hundred with one relayout (seeds 0-99) the quick layouts' solves (second
+    layouts and relayouts) took 5.0 s of process time, 2.2 s of it in the 14 that failed, and
+    3.9 s with a sixth of the fallback (the four rounds the fallback won there, it won within its
+    first sixth; on seeds 0-199, and 0-99 with a relayout, three rounds won later than that, so
+    the second layouts keep the whole fallback and the default its buildings)."""
     quick = _quick(solver)
     settings = solver.get("settings")
     if settings is not None:
