@@ -12,9 +12,9 @@ rooms reaching the walls they are said to be at, relations in the right order, a
 adjacency met, no contact the adjacency does not pair, rooms filling their boxes, stated widths
 and depths in proportion) and that shares most with the other seed sets' layouts
 (:data:`CONSENSUS`) is kept, after the :data:`REFINE` best are laid out again from seeds at their
-own rooms, and the :data:`REFINE_AGAIN` best of all those once more. The solve is the caller's; ``mansion eval
-floorplan --planner text`` runs it under :data:`TEXT_ENERGY`. A seed set the solver cannot lay
-out is skipped; only when none can is the plan a failure.
+own rooms, and the :data:`REFINE_AGAIN` best of all those once more. The solve is the caller's;
+``mansion eval floorplan --planner text`` runs it under :data:`TEXT_ENERGY`. A seed set the
+solver cannot lay out is skipped; only when none can is the plan a failure.
 """
 
 from __future__ import annotations
@@ -355,7 +355,11 @@ REFINE = 16
 #: tried yet: most of the best are relayouts that their own rooms lay out the same again, so about
 #: 5 a plan are new). Simulated on the cached candidates with :data:`REFINE` 16, micro / macro,
 #: odd ids 67.87 / 64.84 → 67.93 / 65.13, even 71.61 / 68.23 → 72.15 / 68.66 (4: 67.92 / 65.07,
-#: 72.07 / 68.56; 16: 67.77 / 64.97, 72.40 / 68.86, for twice the solves).
+#: 72.07 / 68.56; 16: 67.77 / 64.97, 72.40 / 68.86, for twice the solves). Both together, T2D
+#: dev, full runs, micro / macro: odd ids 67.27 / 64.19 → 67.64 / 64.77, even 71.22 / 67.68 →
+#: 71.83 / 68.56, all 500 69.21 / 65.90 → 69.69 / 66.63. A third round (this many again, from the
+#: ranking after the second): odd 67.61 / 64.65, even 72.69 / 69.41, 27 and 26 plans changed, the
+#: even ids' gain five plans' jumps.
 REFINE_AGAIN = 8
 
 #: The offset of the solver's random seed (a kind of :data:`SOLVE_KINDS`: the shaped energy, the
