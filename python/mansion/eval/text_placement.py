@@ -347,7 +347,9 @@ SOLVER_SEEDS = 3
 #: text lays out (10: 67.77 / 64.63, 71.47 / 67.90; 12: 67.81 / 64.69, 71.39 / 67.89); the
 #: relayouts of ranks 9–16 score 3 points above the mean layout of their plan (those of ranks 1–8
 #: 6.5), and the best layout of a plan rises from 75.9 to 76.5 (odd) and 79.0 to 79.8 (even).
-#: About 10 solves more a plan, a fifth more.
+#: About 10 solves more a plan, a fifth more. 24, with :data:`REFINE_AGAIN`, full runs: odd ids
+#: 67.64 / 64.77 → 67.61 / 64.74, even 71.83 / 68.56 → 72.70 / 69.35 (33 and 32 plans changed, the
+#: even ids' gain a few plans' jumps, as with a third round).
 REFINE = 16
 
 #: How many of the layouts ranked best among all, the relayouts of :data:`REFINE` included, are
