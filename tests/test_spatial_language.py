@@ -652,6 +652,59 @@ def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: p
     assert chosen in solved
 
 
+def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytest.MonkeyPatch) -> None:
+    from mansion.eval import text_placement
+    from mansion.eval.t2d import T2DPlan, node_id
+    from mansion.eval.text_placement import REFINE, REFINE_AGAIN, _room_seeds, solve_from_text
+
+    assert REFINE_AGAIN >= 1 and REFINE > REFINE_AGAIN
+    plan = T2DPlan.model_validate(make_plan(2))
+    ids = [node_id(r) for r in plan.rooms]
+    solved: list[dict] = []
+
+    class _Layout:
+        def __init__(self, n: int) -> None:
+            # each solve a floor of bands of its own widths, so each one's rooms give new seeds
+            self.grid = _Grid(np.repeat(np.arange(len(ids)).repeat([n] + [1] * (len(ids) - 1))[None, :], 2, axis=0), ids)
+
+    layouts: list[_Layout] = []
+
+    def solve(s):
+        solved.append(s)
+        layouts.append(_Layout(len(solved)))
+        return np.zeros((64, 64), dtype=int), layouts[-1]
+
+    # each layout agrees with the text better than the ones before it
+    monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: -float(len(solved)))
+    monkeypatch.setattr(text_placement, "REFINE", 2)
+    monkeypatch.setattr(text_placement, "REFINE_AGAIN", 1)
+    chosen, _, layout = solve_from_text(plan, "The kitchen is in the north.", solve)
+    read = len(solved) - 3
+    assert read >= 2
+    # the first round lays out the two ranked best (the last two read) again; the second the best
+    # of all, the last relayout, whose rooms give new seeds
+    assert solved[read:read + 2] == [_room_seeds(layouts[read - 1].grid), _room_seeds(layouts[read - 2].grid)]
+    assert solved[-1] == _room_seeds(layouts[read + 1].grid)
+    assert chosen == solved[-1] and layout is layouts[-1]
+
+
+def test_the_choice_prefers_a_layout_the_others_share_to_an_outlier() -> None:
+    from mansion.eval.text_placement import CONSENSUS, _ranking
+
+    a = np.zeros((8, 8), dtype=int)
+    a[:, :4], a[:, 4:] = 1, 2
+    near = a.copy()
+    near[0, 3] = 2
+    outlier = a.T.copy()
+    # the outlier agrees with the text a little better; three layouts share nearly all their cells
+    preds = [a, near, outlier, a.copy()]
+    solved = [(1.0, {}, preds[0], None), (1.0, {}, preds[1], None), (1.0 - CONSENSUS / 10, {}, preds[2], None), (1.0, {}, preds[3], None)]
+    order = _ranking(solved, {})
+    assert order[-1] == 2 and order[0] in (0, 3)
+    # with the text alone the outlier would be first
+    assert min(range(4), key=lambda k: solved[k][0]) == 2
+
+
 def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
     from mansion.eval.text_placement import _agreement
 
