@@ -604,6 +604,31 @@ def test_a_floor_the_mends_bring_to_its_minimums_keeps_every_room() -> None:
     assert not bad and not left and rooms > rooms_out
 
 
+def test_a_floor_too_tight_for_its_wards_leaves_out_only_as_many_as_it_must() -> None:
+    """Hospital 104 of the second realism hundred lays its ward floors out with every ward below
+    its 14.5 m². Laid out again without all the wards it can spare, a floor keeps one ward and
+    its ward corridors take the floor; without only as many as its shortfall needs
+    (``steps.DEFICIT_COVERS``), floor 3 keeps six of its nine wards and no room below its
+    minimums."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(104)
+
+    def ward_floor(index: int) -> tuple[set[str], int]:
+        floor = generate_building(description, building_type=kind, floors=floors, seed=104).floors[index]
+        bad = set(steps.unfit_rooms(floor.layout.rooms, floor.graph)) | steps.narrow_rooms(floor.layout.rooms, kind)
+        return bad, sum(r.room_type == "ward" for r in floor.layout.rooms)
+
+    assert steps.DEFICIT_COVERS
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "DEFICIT_COVERS", ())
+        bad_all, wards_all = ward_floor(3)
+    bad, wards = ward_floor(3)
+    assert not bad_all and wards_all == 1
+    assert not bad and wards == 6
+
+
 def test_load_bearing_off_for_public_buildings() -> None:
     b = generate_building("a three-storey library", seed=0)
     assert not b.program.load_bearing_walls

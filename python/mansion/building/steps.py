@@ -73,7 +73,7 @@ from mansion.building.families import relay_families
 from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.building.outlines import outline, shape_measure
-from mansion.building.recut import hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
+from mansion.building.recut import _least, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.stores import store_pockets
 from mansion.exceptions import InfeasibleLayoutError
@@ -367,6 +367,12 @@ NARROW_MENDS = ("sides", "families", "stores", "halls", "merges", "drops")
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
 
+#: A floor about to be laid out again without the rooms it can spare is first laid out without
+#: only as many of them as its shortfall needs (:func:`_fewest_left_out`): left out, most squeezed
+#: first, until their planned area covers this many times what the rooms kept lack of their
+#: minimum areas, each cover in turn; kept when its mends leave no room below its minimums.
+DEFICIT_COVERS: tuple[float, ...] = (2.0, 4.0)
+
 #: Whether a room the mends leave below its clear width or minimum area is, last, left out where
 #: the program can spare it, its floor shared by the rooms beside it (:mod:`mansion.building.dissolve`).
 DISSOLVE = True
@@ -398,6 +404,65 @@ def _fits_better(
         return False
     thin = len(narrow_rooms(layout.rooms, program.building_type)) if SPARE_NARROW else 0
     return len(now) + thin < len(unfit) + (narrow if SPARE_NARROW else 0)
+
+
+def _fewest_left_out(
+    index: int, planned: RoomGraph, footprint: Footprint, first: FloorLayout, unfit: dict[str, str],
+    dropped: list[str], shape: tuple[int, int], seed: int, quick: dict[str, Any], drop_widths: bool,
+    only: int, program: BuildingProgram, asked: set[str], solver: dict[str, Any],
+) -> tuple[tuple[Any, ...], tuple[FloorLayout, RoomGraph, list[str]]] | None:
+    """A floor whose ``first`` layout left ``unfit`` rooms, laid out again without as few of
+    them as its shortfall needs (:func:`_deficit_spare`, each of :data:`DEFICIT_COVERS` in
+    turn, fewer than the ``dropped`` of all it can spare) and mended: the first whose mends leave
+    no room below its minimum area or width, unusable, and no more elongated rooms or slivers
+    than ``shape``, as (the solve's layout, graph, footprint, seed, attempts, relaxations and the
+    notes of the rooms left out; the mended layout, graph and notes); else None."""
+    tried: set[frozenset[str]] = set()
+    for cover in DEFICIT_COVERS:
+        least, notes = leave_out(planned, _deficit_spare(first, planned, unfit, cover), keep=asked)
+        gone = frozenset(n.id for n in planned.nodes) - {n.id for n in least.nodes}
+        if not 0 < len(notes) < len(dropped) or gone in tried:
+            continue
+        tried.add(gone)
+        try:
+            again = _solve(index, least, footprint, None, seed, quick, drop_widths, only=only)
+        except InfeasibleLayoutError:
+            continue
+        if unfit_rooms(again[0].rooms, again[1]):
+            # measured on the second hundred: no such layout came out of its mends without
+            # rooms below their minimums (11 of 26), so they are not mended
+            continue
+        fixed = _mended_floor(again[0], again[1], program, asked, solver)
+        bad = _bad_counts(fixed[0], fixed[1], program.building_type)
+        if not any(bad) and all(a <= b for a, b in zip(misshapen(fixed[0].rooms), shape)):
+            return (*again, notes), fixed
+    return None
+
+
+def _deficit_spare(layout: FloorLayout, graph: RoomGraph, unfit: dict[str, str], cover: float = 1.0) -> dict[str, str]:
+    """Of the ``unfit`` rooms of a floor's first ``layout`` (id -> why), the fewest whose planned
+    area, left out with the rooms cut from them (:func:`leave_out`), covers what the others lack
+    of their minimum areas: the most squeezed first. A room at its minimum area but with no usable
+    square counts a quarter of its minimum as lacking. Nine wards laid out at 5 to 12 m² of their
+    14.5 m² lack 45 m² in all: leaving three out covers it, where leaving eight out (every ward
+    but the one a floor keeps of its type) gave their two ward corridors the floor."""
+    nodes = {n.id: n for n in graph.nodes}
+    areas = {room.id: room.area for room in layout.rooms}
+
+    def lacks(room: str) -> float:
+        least = _least(nodes[room])
+        return max(least - areas.get(room, 0.0), 0.25 * least)
+
+    order = sorted((r for r in unfit if r in nodes), key=lambda r: (-lacks(r), r))
+    spare: dict[str, str] = {}
+    for room in order:
+        spare[room] = unfit[room]
+        fewer, _ = leave_out(graph, spare)
+        kept = {n.id for n in fewer.nodes}
+        freed = sum(n.area for n in graph.nodes if n.id not in kept)
+        if freed >= cover * sum(lacks(r) for r in order if r in kept):
+            break
+    return spare
 
 
 def _unusable(unfit: dict[str, str]) -> int:
@@ -682,6 +747,7 @@ def _solve_building_floor(
     repairs = settings is not None and settings.repair
     asked = {i for r in program.requests if r.honoured for i in r.room_ids}
     premended: tuple[FloorLayout, RoomGraph, list[str]] | None = None
+    fewest: Any = None
     relaid = False
     if repairs and planner is None and not program.load_bearing_walls:
         # Rooms the layout left below their minimum area or unusable: the floor is too tight for
@@ -714,14 +780,26 @@ def _solve_building_floor(
         # its rooms, under seeds of its own
         same = bool(unfit) and not dropped
         shape = misshapen(layout.rooms) if (dropped or same) else (0, 0)  # what the new ones must match
+        solved = (layout, graph, fp, rng_seed, attempts, relax, left_out)
         tries = RESOLVE_SAME_SEEDS if same else (RESOLVE_SEEDS if unfit else RESOLVE_NARROW_SEEDS) if dropped else 0
         if tries and MEND_FIRST:
             # the mends may bring every room of this layout to its minimums: then it is kept with
             # all its rooms, and nothing is left out for what the mends would have mended; else
             # it is kept if the layout without rooms, mended too, does no better (below)
             premended = _mended_floor(layout, graph, program, asked, solver)
-            solved = (layout, graph, fp, rng_seed, attempts, relax, left_out)
             if not any(_bad_counts(premended[0], premended[1], program.building_type)):
+                tries = 0
+        if tries and dropped and not same and DEFICIT_COVERS:
+            # as few rooms left out as the floor's shortfall needs, kept when its mends leave no
+            # room below its minimums and no more elongated or slivers; else all it can spare
+            fewest = _fewest_left_out(
+                index, planned, footprint, layout, unfit, dropped, shape, seed, quick, drop_widths,
+                attempts - 1, program, asked, solver,
+            )
+            if fewest is not None:
+                layout, graph, fp, rng_seed, attempts, relax, more = fewest[0]
+                left_out = [*left_out, *more]
+                fewest = fewest[1]
                 tries = 0
         for k in range(tries):
             try:
@@ -736,7 +814,9 @@ def _solve_building_floor(
                 relaid = True
                 break
     mended: list[str] = []
-    if premended is not None and not relaid:
+    if fewest is not None:
+        layout, graph, mended = fewest
+    elif premended is not None and not relaid:
         layout, graph, mended = premended
     elif repairs:
         layout, graph, mended = _mended_floor(layout, graph, program, asked, solver)
