@@ -371,7 +371,7 @@ NARROW_WHY = "laid out narrower than its clear width"
 #: only as many of them as its shortfall needs (:func:`_fewest_left_out`): left out, most squeezed
 #: first, until their planned area covers this many times what the rooms kept lack of their
 #: minimum areas, each cover in turn; kept when its mends leave no room below its minimums.
-DEFICIT_COVERS: tuple[float, ...] = (2.0, 4.0)
+DEFICIT_COVERS: tuple[float, ...] = (3.0,)
 
 #: Whether a room the mends leave below its clear width or minimum area is, last, left out where
 #: the program can spare it, its floor shared by the rooms beside it (:mod:`mansion.building.dissolve`).
