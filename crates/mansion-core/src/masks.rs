@@ -164,8 +164,16 @@ pub fn pair_walls(labels: &[i32], w: usize, h: usize, pairs: &[(i32, i32)]) -> V
 /// (label, cells, sum of the cells' centres' x, of their y) with cell (row r, column c) centred
 /// at (`ox` + (c + 0.5) `s`, `oy` + (r + 0.5) `s`), summed row by row, left to right: the sums
 /// the floor's mends redraw a room's centroid from, to the last bit of a Python loop's.
-pub fn cell_sums(labels: &[i32], w: usize, h: usize, ox: f64, oy: f64, s: f64) -> Vec<(i32, usize, f64, f64)> {
-    let mut acc: std::collections::BTreeMap<i32, (usize, f64, f64)> = std::collections::BTreeMap::new();
+pub fn cell_sums(
+    labels: &[i32],
+    w: usize,
+    h: usize,
+    ox: f64,
+    oy: f64,
+    s: f64,
+) -> Vec<(i32, usize, f64, f64)> {
+    let mut acc: std::collections::BTreeMap<i32, (usize, f64, f64)> =
+        std::collections::BTreeMap::new();
     for r in 0..h {
         let cy = oy + (r as f64 + 0.5) * s;
         for c in 0..w {
@@ -289,7 +297,10 @@ mod tests {
         let got = cell_sums(&labels, 3, 2, 10.0, 20.0, 0.5);
         assert_eq!(
             got,
-            vec![(0, 2, 10.25 + 11.25, 20.25 + 20.75), (1, 3, 10.75 + 10.25 + 10.75, 20.25 + 20.75 + 20.75)]
+            vec![
+                (0, 2, 10.25 + 11.25, 20.25 + 20.75),
+                (1, 3, 10.75 + 10.25 + 10.75, 20.25 + 20.75 + 20.75)
+            ]
         );
         assert!(cell_sums(&[-1, -1], 2, 1, 0.0, 0.0, 1.0).is_empty());
     }

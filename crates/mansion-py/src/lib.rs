@@ -249,7 +249,9 @@ fn pair_walls(
     pairs: Vec<(i32, i32)>,
 ) -> PyResult<Vec<(u32, u32)>> {
     let (cells, w, h) = label_cells(&labels);
-    guarded(py, move || Ok(mansion_core::masks::pair_walls(&cells, w, h, &pairs)))
+    guarded(py, move || {
+        Ok(mansion_core::masks::pair_walls(&cells, w, h, &pairs))
+    })
 }
 
 /// Per label of an int32 label grid, in label order: (label, cells, sum of the cells' centres'
@@ -263,7 +265,9 @@ fn cell_sums(
     s: f64,
 ) -> PyResult<Vec<(i32, usize, f64, f64)>> {
     let (cells, w, h) = label_cells(&labels);
-    guarded(py, move || Ok(mansion_core::masks::cell_sums(&cells, w, h, ox, oy, s)))
+    guarded(py, move || {
+        Ok(mansion_core::masks::cell_sums(&cells, w, h, ox, oy, s))
+    })
 }
 
 /// (h, w, row, column, cells of `own` held) of each rectangle of cells inside `region` (both
