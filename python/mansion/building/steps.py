@@ -424,7 +424,7 @@ def _fewest_left_out(
     notes of the rooms left out; the mended layout, graph and notes); else None."""
     tried: set[frozenset[str]] = set()
     for cover in DEFICIT_COVERS:
-        least, notes = leave_out(planned, _deficit_spare(first, planned, unfit, cover), keep=asked)
+        least, notes = _deficit_spare(first, planned, unfit, cover, keep=asked)
         gone = frozenset(n.id for n in planned.nodes) - {n.id for n in least.nodes}
         if not 0 < len(notes) < len(dropped) or gone in tried:
             continue
@@ -444,10 +444,13 @@ def _fewest_left_out(
     return None
 
 
-def _deficit_spare(layout: FloorLayout, graph: RoomGraph, unfit: dict[str, str], cover: float = 1.0) -> dict[str, str]:
-    """Of the ``unfit`` rooms of a floor's first ``layout`` (id -> why), the fewest whose planned
-    area, left out with the rooms cut from them (:func:`leave_out`), covers ``cover`` times what
-    the others lack of their minimum areas: the most squeezed first. A room at its minimum area
+def _deficit_spare(
+    layout: FloorLayout, graph: RoomGraph, unfit: dict[str, str], cover: float = 1.0, keep: Iterable[str] = (),
+) -> tuple[RoomGraph, list[str]]:
+    """``graph`` without the fewest of the ``unfit`` rooms of a floor's first ``layout`` (id ->
+    why) whose planned area, left out with the rooms cut from them (:func:`leave_out`, which
+    never leaves out ``keep``), covers ``cover`` times what the others lack of their minimum
+    areas, the most squeezed first; with :func:`leave_out`'s notes. A room at its minimum area
     but with no usable square counts a quarter of its minimum as lacking. Nine wards laid out at
     4 to 14 m² of their 14.5 m² lack 45 m² in all: leaving three out covers it once, where
     leaving eight out (every ward but the one a floor keeps of its type) gave the floor to their
@@ -461,14 +464,15 @@ def _deficit_spare(layout: FloorLayout, graph: RoomGraph, unfit: dict[str, str],
 
     order = sorted((r for r in unfit if r in nodes), key=lambda r: (-lacks(r), r))
     spare: dict[str, str] = {}
+    fewer, notes = graph, []
     for room in order:
         spare[room] = unfit[room]
-        fewer, _ = leave_out(graph, spare)
+        fewer, notes = leave_out(graph, spare, keep=keep)
         kept = {n.id for n in fewer.nodes}
         freed = sum(n.area for n in graph.nodes if n.id not in kept)
         if freed >= cover * sum(lacks(r) for r in order if r in kept):
             break
-    return spare
+    return fewer, notes
 
 
 def _unusable(unfit: dict[str, str]) -> int:
