@@ -631,6 +631,22 @@ def test_a_floor_too_tight_for_its_wards_leaves_out_only_as_many_as_it_must() ->
     assert not bad_all and wards_all == 1
     assert not bad and wards == 6
 
+def test_a_librarys_upper_floors_open_off_a_corridor_with_the_reading_hall_a_room() -> None:
+    """Library 52 of the realism hundred: with the reading hall as an upper floor's hub, the hub
+    took what its study rooms and stacks left, 1.5 m halls between them with no 5 m square. Its
+    upper floors now open off a corridor hub, and the reading hall is a room of its width."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(52)
+    b = generate_building(description, building_type=kind, floors=floors, seed=52)
+    assert b.floors[0].graph.hub.room_type == "lobby"
+    for floor in b.floors[1:]:
+        assert floor.graph.hub.room_type == "corridor"
+        halls = [r for r in floor.layout.rooms if r.room_type == "reading_hall"]
+        assert len(halls) == 1
+        assert not steps.narrow_rooms(floor.layout.rooms, kind)
+
 
 def test_load_bearing_off_for_public_buildings() -> None:
     b = generate_building("a three-storey library", seed=0)

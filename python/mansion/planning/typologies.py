@@ -322,22 +322,31 @@ LIBRARY = Typology(
          Rm("children_library", optional=True), Rm("cafe", area=30, optional=True), *_TOILETS),
         (_TOILET_ZONE,),
     ),
+    # Upper floors: a corridor hub with the reading hall, stacks and study rooms off it, as a
+    # library's upper floors are planned. With the reading hall as the hub, the hub takes what
+    # the rooms cut from it leave: halls 1.5 m wide snaking between study rooms and stacks, no
+    # 5 m square in them (rooms below their width on the libraries of the offline hundreds
+    # 4 / 3 -> 0 / 0, below area 0 / 0 -> 0 / 1, rooms 185 / 199 -> 185 / 203).
     upper=FloorTemplate(
-        "reading_hall",
-        (Rm("stacks", fill=True), Rm("study_room", 3), Rm("computer_lab", area=40, optional=True),
-         Rm("multimedia_room", optional=True), *_TOILETS),
+        "corridor",
+        (Rm("reading_hall"), Rm("stacks", fill=True), Rm("study_room", 3),
+         Rm("computer_lab", area=40, optional=True), Rm("multimedia_room", optional=True), *_TOILETS),
         (_TOILET_ZONE,),
     ),
     top=FloorTemplate(
-        "reading_hall",
-        (Rm("archive"), Rm("study_room", 2), Rm("office", 2), Rm("stacks", fill=True), *_TOILETS),
+        "corridor",
+        (Rm("reading_hall"), Rm("archive"), Rm("study_room", 2), Rm("office", 2), Rm("stacks", fill=True),
+         *_TOILETS),
         (_TOILET_ZONE,),
     ),
     shapes=("rectangle", "l_shape", "u_shape", "courtyard"),
     stacks=("uniform", "setback"),
     stair_only_floors=1,
     reserve=(0.22, 0.32),
-    description="lobby with the circulation desk; reading rooms, stacks and study rooms",
+    description=(
+        "lobby with the circulation desk; reading rooms, stacks and study rooms; upper floors a "
+        "corridor with the reading hall off it"
+    ),
 )
 
 RESTAURANT = Typology(
