@@ -648,6 +648,23 @@ def test_a_librarys_upper_floors_open_off_a_corridor_with_the_reading_hall_a_roo
         assert not steps.narrow_rooms(floor.layout.rooms, kind)
 
 
+def test_a_supermarkets_sales_floor_is_a_room_off_a_corridor() -> None:
+    """Supermarket 37 of the realism hundred: its sales floor, the ground floor's hub, took what
+    its rooms left, a ring of 1.5 m aisles round back-of-house rooms in the middle of the floor
+    with no 6 m square holding its 100 m² minimum. The ground floor now opens off a corridor hub
+    and the sales floor is a room at its width and area."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(37)
+    ground = generate_building(description, building_type=kind, floors=floors, seed=37).floors[0]
+    assert ground.graph.hub.room_type == "corridor"
+    sales = [r for r in ground.layout.rooms if r.room_type == "sales_floor"]
+    assert len(sales) == 1 and sales[0].area >= 100.0
+    assert not steps.narrow_rooms(ground.layout.rooms, kind)
+    assert not steps.unfit_rooms(ground.layout.rooms, ground.graph)
+
+
 def test_load_bearing_off_for_public_buildings() -> None:
     b = generate_building("a three-storey library", seed=0)
     assert not b.program.load_bearing_walls
