@@ -345,6 +345,31 @@ def test_leave_out_drops_repeated_rooms_with_their_own_rooms_never_the_last_of_a
     assert same is graph and notes == []
 
 
+def test_leave_out_drops_a_wing_corridor_whose_rooms_all_go() -> None:
+    """Hotel 82 of the realism hundred left out the six guest rooms of its second wing and kept
+    the wing's corridor, 13.6 m² serving nothing; the corridor now goes with them."""
+    from mansion.building.steps import leave_out
+    from mansion.models import RoomGraph
+
+    def node(i: str, kind: str, room_type: str) -> dict:
+        return {"id": i, "type": kind, "area": 20.0, "room_type": room_type}
+
+    guests = {"wing_1": ("guest_room_1", "guest_room_2"), "wing_2": ("guest_room_3", "guest_room_4")}
+    nodes = [node("corridor", "main", "corridor"), node("wing_1", "area", "corridor"), node("wing_2", "area", "corridor")]
+    nodes += [node(g, "area", "guest_room") for rooms in guests.values() for g in rooms]
+    edges = [{"source": "corridor", "target": w} for w in guests]
+    edges += [{"source": w, "target": g} for w, rooms in guests.items() for g in rooms]
+    graph = RoomGraph.model_validate({"nodes": nodes, "edges": edges})
+    why = "laid out at 11.0 m², below its 16 m² minimum"
+    fewer, notes = leave_out(graph, {"guest_room_3": why, "guest_room_4": why})
+    assert {n.id for n in fewer.nodes} == {"corridor", "wing_1", "guest_room_1", "guest_room_2"}
+    assert notes[-1] == "wing_2 left out: every room it served was left out"
+    fewer.check()
+    # a wing that keeps one of its rooms stays
+    fewer, notes = leave_out(graph, {"guest_room_3": why})
+    assert "wing_2" in {n.id for n in fewer.nodes} and len(notes) == 1
+
+
 def _is_left_out(note: str, why: str = "laid out") -> bool:
     """Whether a floor's note is of a room it left out because of how it was laid out (``why``;
     not the planner's 'optional rooms left out' for a floor too small)."""
