@@ -191,6 +191,36 @@ def test_sizes_in_feet_and_metres() -> None:
     assert sizes("The kitchen is 10 feet in length, 7 feet in width.") == [("kitchen_2", round(10 * ft, 2), round(7 * ft, 2), None, True)]
 
 
+def test_sizes_with_the_nouns_before_their_numbers_and_common_spellings() -> None:
+    ft = 0.3048
+
+    def size(text: str) -> list[tuple[str, float | None, float | None, float | None, bool]]:
+        return sizes("The bathroom is in the south. " + text)
+
+    # the nouns keep their order, as "12 feet length and 4 feet width" does
+    assert size("The kitchen is in the north. Its length is about 11 feet and width is 6 feet.") == [
+        ("kitchen_2", round(11 * ft, 2), round(6 * ft, 2), None, True)
+    ]
+    assert size("The kitchen's width is 8 feet and the length is 7 feet.") == [
+        ("kitchen_2", round(8 * ft, 2), round(7 * ft, 2), None, True)
+    ]
+    # a unit said once; "lenght" as it is often typed
+    assert size("The kitchen has a lenght of 9 feet and width of 8.") == [
+        ("kitchen_2", round(9 * ft, 2), round(8 * ft, 2), None, True)
+    ]
+    assert size("The kitchen width is 3 m and length is 4 m.") == [("kitchen_2", 3.0, 4.0, None, True)]
+    # "breadth" is a width; "across" after a size is wide, and before a room a relation still
+    assert size("The kitchen is 10 feet in breadth and 12 feet in length.") == [
+        ("kitchen_2", round(10 * ft, 2), round(12 * ft, 2), None, True)
+    ]
+    assert size("The kitchen is about 9 feet across and 15 feet deep.") == [
+        ("kitchen_2", round(9 * ft, 2), round(15 * ft, 2), None, True)
+    ]
+    assert ("kitchen_2", "relation", "across_from", ("bathroom_3",)) in facts(
+        "The kitchen is across from the bathroom. It is 12 feet wide by 5 feet deep."
+    )
+
+
 # -- naming rooms -------------------------------------------------------------------------------
 
 

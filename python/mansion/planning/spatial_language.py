@@ -161,6 +161,11 @@ _FOLDS: tuple[tuple[str, str], ...] = (
     (r"\b(right\s*side|rightside)\b", " right side "),
     (r"\bright\s+(?=next|by|beside|above|below|behind|at|in|on|off|outside|near)", " "),
     (r"\bdog\s*leg\b", " "),
+    # "lenght" (70 times in the 500 dev descriptions), "breadth" (a width), "9 feet across and
+    # 15 feet deep" (across: wide)
+    (r"\b(?:lenght|lenth|legnth|lengh)\b", "length"),
+    (r"\bbreadth\b", "width"),
+    (r"(\d\s*(?:feet|foot|ft|m|meters?|metres?)\s+)across\b", r"\1wide"),
     # "South est corner": "est" is no word of its own after a compass word
     (r"\b(north|south)\s*-?\s*est\b", r"\1 east"),
     # "Location: East side, Relationship: ...": a label whose room's name was left out (it opens
@@ -1052,6 +1057,18 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
             unit = _unit(pair.group(2) or pair.group(5), text)
             spans.append((pair.start(), pair.end()))
             out.append(Statement(subject=subj, kind="size", width=a * unit, depth=b * unit, oriented=True, text=_plain(pair.group(0), mentions)))
+    if not out:
+        # the nouns before their numbers: "its length is about 11 feet and width is 6 feet",
+        # "a length of 9 feet and width of 8", "the length is 8 feet and the width is 8 feet";
+        # the nouns keep their order as above (the first across the drawing)
+        said = r"(?:length|width)\s*(?:is|of|was|:|=)?\s*(?:about|approximately|approx\.?|around|roughly|nearly)?\s*"
+        nouns = re.search(r"\b" + said + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\b.{0,40}?\b" + said + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")(?!\w)", text)
+        if nouns:
+            a, b = float(nouns.group(1)), float(nouns.group(3))
+            if 0 < a <= 300 and 0 < b <= 300:
+                unit = _unit(nouns.group(2) or nouns.group(4), text)
+                spans.append((nouns.start(), nouns.end()))
+                out.append(Statement(subject=subj, kind="size", width=a * unit, depth=b * unit, oriented=True, text=_plain(nouns.group(0), mentions)))
     for m in re.finditer(_NUM_RE + r"\s*(?:square|sq\.?|sqrt|sqr)\s*(feet|foot|ft|meters?|metres?|m)\b|" + _NUM_RE + r"\s*(sqft|sq\.?ft|ft2|ft²|m2|m²|sqm)\b", text):
         if any(not (m.end() <= a or m.start() >= b) for a, b in spans):
             continue
