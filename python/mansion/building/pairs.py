@@ -1,0 +1,191 @@
+"""Two rooms cut again together: a room below its clear width and a room beside it share their
+cells anew by one straight cut or one corner cut (issue 14).
+
+The other width mends move one room's walls at a time: a rectangle of about the room's area
+(:mod:`mansion.building.recut`), a wall pushed out (:mod:`mansion.building.sides`), a family laid
+out again as a row (:mod:`mansion.building.families`). A room left an L round a neighbour that
+is itself oddly shaped (a hotel lounge wrapped round a conference room, a board room beside a
+pantry, a guest room round its ensuite) needs both redrawn: an architect draws the wall between
+the two again, straight or with one corner, and each room takes a side.
+
+:func:`recut_pairs` takes each room below its clear width (not the hub, nor a core, nor
+circulation) and each room beside it sharing a door's width of wall (no core, not the hub; in
+the same first-round region on floors that carry walls). The cells the two hold are split by
+every straight line of the grid across them and every corner (a quarter of the plane at each
+grid point, each of the four ways), and the room takes either side. A split is kept only when
+
+- the room comes out with no defect of ``mansion eval realism``'s (below its width, elongated, a
+  sliver, no usable square) and at its minimum area;
+- the room beside it is one piece, at its minimum area (or what it had, if less), with no defect
+  it lacked, no part one cell wide it lacked nor its 1 m squares split into more pieces
+  (:func:`mansion.building.recut._passable`);
+- every relation of either room in the room graph keeps its wall, and the two keep a door's
+  width of wall between them (:func:`mansion.building.recut.walls_hold`).
+
+Of those, the one keeping most of the room's cells wins, then the one closest to the two rooms'
+planned areas. The rooms cut from either (an ensuite of a guest room) keep their cells. Nothing of
+the program changes, so nothing is recorded.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from mansion.building.load_bearing import first_round_groups
+from mansion.building.merge import DOOR_WIDTH, mask_defects
+from mansion.building.outlines import shape_measure
+from mansion.building.recut import (
+    _connected, _kept_walls, _least, _passable, _redrawn, _wide_rectangle, held_walls, walls_hold,
+)
+from mansion.models.graph import RoomGraph
+from mansion.models.layout import FloorLayout
+from mansion.models.room_design import needed_width, room_design
+from mansion.models.room_shape import EPS
+
+__all__ = ["MAX_PAIR_TRIED", "recut_pairs"]
+
+#: Splits judged in full per pair of rooms at most, keeping most of the room's cells first (each
+#: has its pieces and shared walls measured; the areas of all are counted at once).
+MAX_PAIR_TRIED = 60
+
+
+def recut_pairs(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    building_type: str | None = None,
+    min_contact: float = 1.0,
+    same_region: bool = False,
+) -> FloorLayout:
+    """``layout`` with each room below its clear width and a room beside it cut again together by
+    one straight or corner cut, where the module's rules allow; rooms in the order of their ids,
+    their neighbours too, the first neighbour that mends the room taking it.
+    ``same_region``: only within one first-round region (floors that carry walls)."""
+    nodes = {n.id: n for n in graph.nodes}
+    hub = graph.hub.id
+    group = first_round_groups(graph) if same_region else None
+    for room in sorted(r.id for r in layout.rooms):
+        node = nodes.get(room)
+        if node is None or node.is_core or room == hub or room_design(node.room_type).circulation:
+            continue
+        r = layout.room(room)
+        if _wide_rectangle(r, building_type) or not shape_measure(
+            r, ("narrow", needed_width(r.room_type, building_type))
+        ):
+            continue
+        beside = sorted(
+            other for a in layout.adjacencies if room in (a.a, a.b) and a.longest + EPS >= DOOR_WIDTH
+            for other in [a.b if a.a == room else a.a]
+            if other in nodes and not nodes[other].is_core and other != hub
+            and (group is None or group.get(other) == group.get(room))
+        )
+        for other in beside:
+            found = _best_pair(layout, graph, room, other, building_type, min_contact)
+            if found is not None:
+                layout = found
+                break
+    return layout
+
+
+def _counts(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(the cells of ``mask`` each part :func:`_part` names holds, those parts), over every part
+    one cut takes off a grid of ``mask``'s shape: the cells below each row line and left of each
+    column line, and each of the four quarters at each inner grid point (the rest of the grid is
+    the other side of the cut). Counted from prefix sums: a pair weighs thousands of parts."""
+    h, w = mask.shape
+    p = np.zeros((h + 1, w + 1), dtype=np.int64)
+    p[1:, 1:] = mask.cumsum(axis=0).cumsum(axis=1)
+    total = p[h, w]
+    k1, k2 = np.meshgrid(np.arange(1, h), np.arange(1, w), indexing="ij")
+    k1, k2 = k1.ravel(), k2.ravel()
+    ll = p[k1, k2]
+    lr, ul = p[k1, w] - ll, p[h, k2] - ll
+    counts = [p[1:h, w], p[h, 1:w], ll, lr, ul, total - ll - lr - ul]
+    parts = [
+        np.stack([np.full(h - 1, 0), np.arange(1, h), np.zeros(h - 1, dtype=np.int64)], axis=1),
+        np.stack([np.full(w - 1, 1), np.zeros(w - 1, dtype=np.int64), np.arange(1, w)], axis=1),
+    ] + [np.stack([np.full(len(k1), 2 + q), k1, k2], axis=1) for q in range(4)]
+    return np.concatenate(counts), np.concatenate(parts)
+
+
+def _part(shape: tuple[int, int], way: int, k1: int, k2: int) -> np.ndarray:
+    """The cells of a grid of ``shape`` one cut takes off (:func:`_counts`): ``way`` 0, the rows
+    below line ``k1``; 1, the columns left of line ``k2``; 2-5, the quarter at grid point
+    (``k1``, ``k2``) below and left, below and right, above and left, above and right."""
+    yy, xx = np.mgrid[0:shape[0], 0:shape[1]]
+    below, left = yy < k1, xx < k2
+    return [below, left, below & left, below & ~left, ~below & left, ~below & ~left][way]
+
+
+def _best_pair(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    room: str,
+    other: str,
+    building_type: str | None,
+    min_contact: float,
+) -> FloorLayout | None:
+    """The layout with ``room`` and ``other`` cut again by the best split of their cells, or
+    None when no split passes the module's rules."""
+    grid = layout.grid
+    labels = grid.array()
+    ids = list(grid.ids)
+    cell = grid.cell_size
+    k_room, k_other = ids.index(room), ids.index(other)
+    both = (labels == k_room) | (labels == k_other)
+    rr, cc = np.nonzero(both)
+    # the two rooms' box and the cells round it (every wall of the two lies there)
+    y0, y1 = max(int(rr.min()) - 1, 0), min(int(rr.max()) + 2, labels.shape[0])
+    x0, x1 = max(int(cc.min()) - 1, 0), min(int(cc.max()) + 2, labels.shape[1])
+    sub = labels[y0:y1, x0:x1].astype(np.int32)
+    cells = both[y0:y1, x0:x1]
+    own, theirs = sub == k_room, sub == k_other
+    nodes = {n.id: n for n in graph.nodes}
+    r_room, r_other = layout.room(room), layout.room(other)
+    unit = cell * cell
+    least = _least(nodes[room]) / unit
+    other_least = min(_least(nodes[other]), r_other.area) / unit
+    targets = np.array([max(r_room.target_area, _least(nodes[room])), r_other.target_area]) / unit
+    # each side of each cut for the room (the part a cut takes off, then the rest): its cells,
+    # those it keeps of its own, the other's
+    part_cells, parts = _counts(cells)
+    part_own, _ = _counts(own)
+    total, total_own = int(cells.sum()), int(own.sum())
+    area = np.concatenate([part_cells, total - part_cells])
+    kept = np.concatenate([part_own, total_own - part_own])
+    rest = total - area
+    fits = (area + EPS >= least) & (rest + EPS >= other_least) & (area > 0) & (rest > 0) & (kept > 0)
+    miss = np.abs(area - targets[0]) + np.abs(rest - targets[1])
+    order = [int(i) for i in np.lexsort((miss, -kept)) if fits[i]]
+    other_defects = mask_defects(theirs, r_other.room_type, building_type, cell)
+    other_passable = _passable(theirs)
+    held = held_walls(ids, _kept_walls(layout, graph, {room, other}), room, other)
+    seen: set[bytes] = set()
+    tried = 0
+    for i in order:
+        way, k1, k2 = (int(v) for v in parts[i % len(parts)])
+        side = _part(cells.shape, way, k1, k2)
+        side = cells & (side if i < len(parts) else ~side)
+        key = side.tobytes()
+        if key in seen:
+            continue  # the same cells from another cut
+        seen.add(key)
+        tried += 1
+        if tried > MAX_PAIR_TRIED:
+            break
+        left = cells & ~side
+        if not (_connected(side) and _connected(left)):
+            continue
+        if mask_defects(side, r_room.room_type, building_type, cell):
+            continue
+        if not mask_defects(left, r_other.room_type, building_type, cell) <= other_defects:
+            continue
+        if any(a > b for a, b in zip(_passable(left), other_passable)):
+            continue
+        new = np.where(cells, k_other, sub).astype(np.int32)
+        new[side] = k_room
+        if not walls_hold(new, held, cell, min_contact):
+            continue
+        whole = labels.astype(np.int32)
+        whole[y0:y1, x0:x1] = new
+        return _redrawn(layout, whole)
+    return None
