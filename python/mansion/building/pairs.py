@@ -32,7 +32,7 @@ from __future__ import annotations
 import numpy as np
 
 from mansion.building.load_bearing import first_round_groups
-from mansion.building.merge import DOOR_WIDTH, mask_defects
+from mansion.building.merge import DOOR_WIDTH, block_side, mask_defects
 from mansion.building.outlines import shape_measure
 from mansion.building.recut import (
     _connected, _kept_walls, _least, _passable, _redrawn, _wide_rectangle, held_walls, walls_hold,
@@ -46,7 +46,11 @@ __all__ = ["MAX_PAIR_TRIED", "recut_pairs"]
 
 #: Splits judged in full per pair of rooms at most, keeping most of the room's cells first (each
 #: has its pieces and shared walls measured; the areas of all are counted at once).
-MAX_PAIR_TRIED = 60
+MAX_PAIR_TRIED = int(__import__("os").environ.get("PTRIED", "60"))
+
+
+def _X(name: str) -> bool:
+    return __import__("os").environ.get(name) == "1"
 
 
 def recut_pairs(
@@ -65,7 +69,7 @@ def recut_pairs(
     group = first_round_groups(graph) if same_region else None
     for room in sorted(r.id for r in layout.rooms):
         node = nodes.get(room)
-        if node is None or node.is_core or room == hub or room_design(node.room_type).circulation:
+        if node is None or node.is_core or (room == hub and not _X("RHUB")) or room_design(node.room_type).circulation:
             continue
         r = layout.room(room)
         if _wide_rectangle(r, building_type) or not shape_measure(
@@ -75,7 +79,7 @@ def recut_pairs(
         beside = sorted(
             other for a in layout.adjacencies if room in (a.a, a.b) and a.longest + EPS >= DOOR_WIDTH
             for other in [a.b if a.a == room else a.a]
-            if other in nodes and not nodes[other].is_core and other != hub
+            if other in nodes and not nodes[other].is_core and (other != hub or _X("OHUB"))
             and (group is None or group.get(other) == group.get(room))
         )
         for other in beside:
@@ -105,6 +109,26 @@ def _counts(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         np.stack([np.full(w - 1, 1), np.zeros(w - 1, dtype=np.int64), np.arange(1, w)], axis=1),
     ] + [np.stack([np.full(len(k1), 2 + q), k1, k2], axis=1) for q in range(4)]
     return np.concatenate(counts), np.concatenate(parts)
+
+
+def _thick(parts: np.ndarray, cells: np.ndarray, rest: bool) -> np.ndarray:
+    """The short side, in cells, of the box each of ``parts`` (:func:`_counts`) of ``cells`` lies
+    in (``rest``: the other side of its cut), at most: the cut's lines clipped to the cells' box."""
+    rr, cc = np.nonzero(cells)
+    r0, r1, c0, c1 = int(rr.min()), int(rr.max()) + 1, int(cc.min()), int(cc.max()) + 1
+    way, k1, k2 = parts.T
+    none = np.zeros(len(way), dtype=bool)
+    if rest:
+        # the rest of a straight cut: the other side of its line; of a corner cut, the whole box
+        below, above, left, right = none, way == 0, none, way == 1
+    else:
+        below, above = np.isin(way, (0, 2, 3)), np.isin(way, (4, 5))
+        left, right = np.isin(way, (1, 2, 4)), np.isin(way, (3, 5))
+    lo_r = np.where(above, np.maximum(k1, r0), r0)
+    hi_r = np.where(below, np.minimum(k1, r1), r1)
+    lo_c = np.where(right, np.maximum(k2, c0), c0)
+    hi_c = np.where(left, np.minimum(k2, c1), c1)
+    return np.minimum(hi_r - lo_r, hi_c - lo_c)
 
 
 def _part(shape: tuple[int, int], way: int, k1: int, k2: int) -> np.ndarray:
@@ -153,7 +177,12 @@ def _best_pair(
     area = np.concatenate([part_cells, total - part_cells])
     kept = np.concatenate([part_own, total_own - part_own])
     rest = total - area
-    fits = (area + EPS >= least) & (rest + EPS >= other_least) & (area > 0) & (rest > 0) & (kept > 0)
+    # the room's side must hold its width's square: the box a side lies in (a cut's part, a
+    # straight cut's rest; the rest of a corner cut is an L in the two rooms' box) wide enough
+    wide = np.concatenate([_thick(parts, cells, False), _thick(parts, cells, True)]) >= block_side(
+        needed_width(r_room.room_type, building_type) - 2 * EPS, cell,
+    )
+    fits = wide & (area + EPS >= least) & (rest + EPS >= other_least) & (area > 0) & (rest > 0) & (kept > 0)
     miss = np.abs(area - targets[0]) + np.abs(rest - targets[1])
     order = [int(i) for i in np.lexsort((miss, -kept)) if fits[i]]
     other_defects = mask_defects(theirs, r_other.room_type, building_type, cell)
