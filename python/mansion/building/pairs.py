@@ -31,10 +31,12 @@ the program changes, so nothing is recorded.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from mansion.building.load_bearing import first_round_groups
-from mansion.building.merge import DOOR_WIDTH, block_side, mask_defects
+from mansion.building.merge import DOOR_WIDTH, block_side, mask_defects, square_cover
 from mansion.building.outlines import shape_measure
 from mansion.building.recut import (
     _connected, _kept_walls, _least, _passable, _redrawn, _wide_rectangle, held_walls, walls_hold,
@@ -42,7 +44,7 @@ from mansion.building.recut import (
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width, room_design
-from mansion.models.room_shape import EPS
+from mansion.models.room_shape import EPS, SHARE_EPS, TOLERANCE
 
 __all__ = ["MAX_PAIR_TRIED", "recut_pairs"]
 
@@ -89,29 +91,53 @@ def recut_pairs(
     return layout
 
 
-def _counts(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(the cells of ``mask`` each part :func:`_part` names holds, those parts), over every part
-    one cut takes off a grid of ``mask``'s shape: the cells below each row line and left of each
-    column line, and each of the four quarters at each inner grid point (the rest of the grid is
-    the other side of the cut). Counted from prefix sums: a pair weighs thousands of parts."""
+@functools.lru_cache(maxsize=256)
+def _cuts(shape: tuple[int, int]) -> np.ndarray:
+    """Every part one cut takes off a grid of ``shape``, one (way, k1, k2) row each
+    (:func:`_part`): the cells below each row line and left of each column line, and each of the
+    four quarters at each inner grid point (the rest of the grid is the other side of the cut).
+    Cached by the shape, read only: the pairs of a floor's mends share a few shapes."""
+    h, w = shape
+    k1, k2 = np.meshgrid(np.arange(1, h), np.arange(1, w), indexing="ij")
+    k1, k2 = k1.ravel(), k2.ravel()
+    parts = np.concatenate([
+        np.stack([np.full(h - 1, 0), np.arange(1, h), np.zeros(h - 1, dtype=np.int64)], axis=1),
+        np.stack([np.full(w - 1, 1), np.zeros(w - 1, dtype=np.int64), np.arange(1, w)], axis=1),
+    ] + [np.stack([np.full(len(k1), 2 + q), k1, k2], axis=1) for q in range(4)])
+    parts.flags.writeable = False
+    return parts
+
+
+def _counts(mask: np.ndarray, parts: np.ndarray) -> np.ndarray:
+    """The cells of ``mask`` each of ``parts`` (:func:`_cuts` of its shape) holds, counted from
+    prefix sums: a pair weighs thousands of parts."""
     h, w = mask.shape
     p = np.zeros((h + 1, w + 1), dtype=np.int64)
     p[1:, 1:] = mask.cumsum(axis=0).cumsum(axis=1)
-    total = p[h, w]
-    k1, k2 = np.meshgrid(np.arange(1, h), np.arange(1, w), indexing="ij")
-    k1, k2 = k1.ravel(), k2.ravel()
+    way, k1, k2 = parts.T
     ll = p[k1, k2]
-    lr, ul = p[k1, w] - ll, p[h, k2] - ll
-    counts = [p[1:h, w], p[h, 1:w], ll, lr, ul, total - ll - lr - ul]
-    parts = [
-        np.stack([np.full(h - 1, 0), np.arange(1, h), np.zeros(h - 1, dtype=np.int64)], axis=1),
-        np.stack([np.full(w - 1, 1), np.zeros(w - 1, dtype=np.int64), np.arange(1, w)], axis=1),
-    ] + [np.stack([np.full(len(k1), 2 + q), k1, k2], axis=1) for q in range(4)]
-    return np.concatenate(counts), np.concatenate(parts)
+    below, left = p[k1, w], p[h, k2]
+    # by way: the rows below, the columns left, then the four quarters
+    return np.select(
+        [way == 0, way == 1, way == 2, way == 3, way == 4],
+        [below, left, ll, below - ll, left - ll],
+        p[h, w] - below - left + ll,
+    )
+
+
+def _covered(cells: np.ndarray, width: float, cell: float) -> tuple[np.ndarray, int]:
+    """(the cells of each side of each cut of ``cells`` (:func:`_cuts`' parts, then their
+    rests) that the squares of ``width`` lying in ``cells`` cover, those squares' cells in all).
+    A side's own squares lie in ``cells``, so it is below that width (a tenth of it outside every
+    such square) whenever it is so by these counts."""
+    cover = square_cover(cells, width - 2 * EPS, cell)
+    part = _counts(cover, _cuts(cells.shape))
+    every = int(cover.sum())
+    return np.concatenate([part, every - part]), every
 
 
 def _thick(parts: np.ndarray, cells: np.ndarray, rest: bool) -> np.ndarray:
-    """The short side, in cells, of the box each of ``parts`` (:func:`_counts`) of ``cells`` lies
+    """The short side, in cells, of the box each of ``parts`` (:func:`_cuts`) of ``cells`` lies
     in (``rest``: the other side of its cut), at most: the cut's lines clipped to the cells' box."""
     rr, cc = np.nonzero(cells)
     r0, r1, c0, c1 = int(rr.min()), int(rr.max()) + 1, int(cc.min()), int(cc.max()) + 1
@@ -131,7 +157,7 @@ def _thick(parts: np.ndarray, cells: np.ndarray, rest: bool) -> np.ndarray:
 
 
 def _part(shape: tuple[int, int], way: int, k1: int, k2: int) -> np.ndarray:
-    """The cells of a grid of ``shape`` one cut takes off (:func:`_counts`): ``way`` 0, the rows
+    """The cells of a grid of ``shape`` one cut takes off (:func:`_cuts`): ``way`` 0, the rows
     below line ``k1``; 1, the columns left of line ``k2``; 2-5, the quarter at grid point
     (``k1``, ``k2``) below and left, below and right, above and left, above and right."""
     out = np.zeros(shape, dtype=bool)
@@ -172,8 +198,8 @@ def _best_pair(
     targets = np.array([max(r_room.target_area, _least(nodes[room])), r_other.target_area]) / unit
     # each side of each cut for the room (the part a cut takes off, then the rest): its cells,
     # those it keeps of its own, the other's
-    part_cells, parts = _counts(cells)
-    part_own, _ = _counts(own)
+    parts = _cuts(cells.shape)
+    part_cells, part_own = _counts(cells, parts), _counts(own, parts)
     total, total_own = int(cells.sum()), int(own.sum())
     area = np.concatenate([part_cells, total - part_cells])
     kept = np.concatenate([part_own, total_own - part_own])
@@ -183,20 +209,29 @@ def _best_pair(
     wide = np.concatenate([_thick(parts, cells, False), _thick(parts, cells, True)]) >= block_side(
         needed_width(r_room.room_type, building_type) - 2 * EPS, cell,
     )
+    # and, as the squares of a side lie in the two rooms' cells, no more than a tenth of it
+    # outside every square of its width those cells hold (the same of the other room's side
+    # where it was not below its width): counted for every cut at once, the splits judged in
+    # full fall to a third
+    covered, _ = _covered(cells, needed_width(r_room.room_type, building_type), cell)
+    sound = area - covered <= (TOLERANCE + SHARE_EPS) * area
+    other_defects = mask_defects(theirs, r_other.room_type, building_type, cell)
+    if "narrow" not in other_defects:
+        # the other room's side is the rest of each cut
+        covered, every = _covered(cells, needed_width(r_other.room_type, building_type), cell)
+        sound &= rest - (every - covered) <= (TOLERANCE + SHARE_EPS) * rest
     fits = wide & (area + EPS >= least) & (rest + EPS >= other_least) & (area > 0) & (rest > 0) & (kept > 0)
     miss = np.abs(area - targets[0]) + np.abs(rest - targets[1])
     (found,) = np.nonzero(fits)
     order = found[np.lexsort((miss[found], -kept[found]))].tolist()
     if not order:
         return None
-    other_defects = mask_defects(theirs, r_other.room_type, building_type, cell)
     other_passable = _passable(theirs)
     held = held_walls(ids, _kept_walls(layout, graph, {room, other}), room, other)
     seen: set[bytes] = set()
     tried = 0
-    cuts = parts.tolist()
     for i in order:
-        way, k1, k2 = cuts[i % len(cuts)]
+        way, k1, k2 = parts[i % len(parts)].tolist()
         side = _part(cells.shape, way, k1, k2)
         side = cells & (side if i < len(parts) else ~side)
         key = side.tobytes()
@@ -206,6 +241,8 @@ def _best_pair(
         tried += 1
         if tried > MAX_PAIR_TRIED:
             break
+        if not sound[i]:
+            continue  # a side below its width by the counts above
         # the room's shape first (one count by the core rules most splits out), then the pieces
         if mask_defects(side, r_room.room_type, building_type, cell):
             continue
