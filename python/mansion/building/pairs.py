@@ -50,9 +50,8 @@ import numpy as np
 
 from mansion.building.load_bearing import first_round_groups
 from mansion.building.merge import DOOR_WIDTH, block_side, mask_defects, square_cover
-from mansion.building.outlines import shape_measure
 from mansion.building.recut import (
-    _connected, _kept_walls, _least, _passable, _redrawn, _wide_rectangle, held_walls, walls_hold,
+    _connected, _kept_walls, _least, _passable, _redrawn, below_width, held_walls, walls_hold,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
@@ -86,10 +85,7 @@ def recut_pairs(
         node = nodes.get(room)
         if node is None or node.is_core or room == hub or room_design(node.room_type).circulation:
             continue
-        r = layout.room(room)
-        if _wide_rectangle(r, building_type) or not shape_measure(
-            r, ("narrow", needed_width(r.room_type, building_type))
-        ):
+        if not below_width(layout.room(room), building_type):
             continue
         beside = sorted(
             other for a in layout.adjacencies if room in (a.a, a.b) and a.longest + EPS >= DOOR_WIDTH
@@ -113,8 +109,8 @@ def _cuts(shape: tuple[int, int]) -> np.ndarray:
     four quarters at each inner grid point (the rest of the grid is the other side of the cut).
     Cached by the shape, read only: the pairs of a floor's mends share a few shapes."""
     h, w = shape
-    k1, k2 = np.meshgrid(np.arange(1, h), np.arange(1, w), indexing="ij")
-    k1, k2 = k1.ravel(), k2.ravel()
+    rows, cols = np.meshgrid(np.arange(1, h), np.arange(1, w), indexing="ij")
+    k1, k2 = rows.ravel(), cols.ravel()
     parts = np.concatenate([
         np.stack([np.full(h - 1, 0), np.arange(1, h), np.zeros(h - 1, dtype=np.int64)], axis=1),
         np.stack([np.full(w - 1, 1), np.zeros(w - 1, dtype=np.int64), np.arange(1, w)], axis=1),
