@@ -345,6 +345,31 @@ def test_leave_out_drops_repeated_rooms_with_their_own_rooms_never_the_last_of_a
     assert same is graph and notes == []
 
 
+def test_leave_out_drops_a_wing_corridor_whose_rooms_all_go() -> None:
+    """Hotel 82 of the realism hundred left out the six guest rooms of its second wing and kept
+    the wing's corridor, 13.6 m² serving nothing; the corridor now goes with them."""
+    from mansion.building.steps import leave_out
+    from mansion.models import RoomGraph
+
+    def node(i: str, kind: str, room_type: str) -> dict:
+        return {"id": i, "type": kind, "area": 20.0, "room_type": room_type}
+
+    guests = {"wing_1": ("guest_room_1", "guest_room_2"), "wing_2": ("guest_room_3", "guest_room_4")}
+    nodes = [node("corridor", "main", "corridor"), node("wing_1", "area", "corridor"), node("wing_2", "area", "corridor")]
+    nodes += [node(g, "area", "guest_room") for rooms in guests.values() for g in rooms]
+    edges = [{"source": "corridor", "target": w} for w in guests]
+    edges += [{"source": w, "target": g} for w, rooms in guests.items() for g in rooms]
+    graph = RoomGraph.model_validate({"nodes": nodes, "edges": edges})
+    why = "laid out at 11.0 m², below its 16 m² minimum"
+    fewer, notes = leave_out(graph, {"guest_room_3": why, "guest_room_4": why})
+    assert {n.id for n in fewer.nodes} == {"corridor", "wing_1", "guest_room_1", "guest_room_2"}
+    assert notes[-1] == "wing_2 left out: every room it served was left out"
+    fewer.check()
+    # a wing that keeps one of its rooms stays
+    fewer, notes = leave_out(graph, {"guest_room_3": why})
+    assert "wing_2" in {n.id for n in fewer.nodes} and len(notes) == 1
+
+
 def _is_left_out(note: str, why: str = "laid out") -> bool:
     """Whether a floor's note is of a room it left out because of how it was laid out (``why``;
     not the planner's 'optional rooms left out' for a floor too small)."""
@@ -630,6 +655,39 @@ def test_a_floor_too_tight_for_its_wards_leaves_out_only_as_many_as_it_must() ->
     bad, wards = ward_floor(3)
     assert not bad_all and wards_all == 1
     assert not bad and wards == 6
+
+def test_a_librarys_upper_floors_open_off_a_corridor_with_the_reading_hall_a_room() -> None:
+    """Library 52 of the realism hundred: with the reading hall as an upper floor's hub, the hub
+    took what its study rooms and stacks left, 1.5 m halls between them with no 5 m square. Its
+    upper floors now open off a corridor hub, and the reading hall is a room of its width."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(52)
+    b = generate_building(description, building_type=kind, floors=floors, seed=52)
+    assert b.floors[0].graph.hub.room_type == "lobby"
+    for floor in b.floors[1:]:
+        assert floor.graph.hub.room_type == "corridor"
+        halls = [r for r in floor.layout.rooms if r.room_type == "reading_hall"]
+        assert len(halls) == 1
+        assert not steps.narrow_rooms(floor.layout.rooms, kind)
+
+
+def test_a_supermarkets_sales_floor_is_a_room_off_a_corridor() -> None:
+    """Supermarket 37 of the realism hundred: its sales floor, the ground floor's hub, took what
+    its rooms left, a ring of 1.5 m aisles round back-of-house rooms in the middle of the floor
+    with no 6 m square holding its 100 m² minimum. The ground floor now opens off a corridor hub
+    and the sales floor is a room at its width and area."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(37)
+    ground = generate_building(description, building_type=kind, floors=floors, seed=37).floors[0]
+    assert ground.graph.hub.room_type == "corridor"
+    sales = [r for r in ground.layout.rooms if r.room_type == "sales_floor"]
+    assert len(sales) == 1 and sales[0].area >= 100.0
+    assert not steps.narrow_rooms(ground.layout.rooms, kind)
+    assert not steps.unfit_rooms(ground.layout.rooms, ground.graph)
 
 
 def test_load_bearing_off_for_public_buildings() -> None:

@@ -192,6 +192,19 @@ def test_cores_are_rooms_with_their_record() -> None:
     assert elevations == sorted(elevations) and elevations[0] == 0.0
 
 
+@pytest.mark.parametrize(("seed", "entry"), [(30, "entrance_hall"), (37, "entrance_vestibule")])
+def test_the_front_door_opens_into_the_entrance_room(seed: int, entry: str) -> None:
+    """A townhouse's front door opened into its living room (the hub) beside its entrance hall,
+    where the living room's doorstep reached more of the floor; a lobby, foyer, entrance hall or
+    vestibule with an exterior wall now takes the front door before the hub."""
+    kind, floors = case(seed)
+    building = generate_building(description(kind, floors), building_type=kind, floors=floors, seed=seed)
+    ground = build_scenes(building, objects=False).houses[0]
+    door = next(d for d in ground.doors if d.id == "door|0|entrance")
+    types = {n.id: n.room_type for n in building.floors[0].graph.nodes}
+    assert door.room0 == door.room1 and types[door.room0] == entry
+
+
 # -- every rule, hand-broken ---------------------------------------------------------------------
 
 

@@ -203,9 +203,12 @@ class _Planner:
         return None
 
     def front_door(self) -> None:
-        """Where a door to the outside may go on the ground floor: exterior stretches of the hub
-        or a lobby, foyer or entrance hall (else of a circulation room, else of any room but a
-        core) where the room has an apron inside, longest first; the building's way in."""
+        """Where a door to the outside may go on the ground floor: exterior stretches of a lobby,
+        foyer, entrance hall or vestibule (else of the hub, else of a circulation room, else of
+        any room but a core) where the room has an apron inside, longest first; the building's
+        way in. An entry room comes before the hub: a townhouse's front door had opened into its
+        living room (the hub) beside the entrance hall, a supermarket's into the sales floor
+        beside its vestibule, wherever the hub's doorstep reached more of the floor."""
         if self.floor.index != 0:
             return
         hub = self.floor.graph.hub.id
@@ -216,8 +219,9 @@ class _Planner:
         asset = _pick(options, self.seed, self.floor.index, "entrance")
         circulation = {n.id for n in self.floor.graph.nodes
                        if not n.is_core and room_kind(n.room_type).role == "circulation"}
-        # the hub or a lobby / foyer, else any circulation room, else any room but a core
-        tiers = [{hub} | entry, circulation, {n.id for n in self.floor.graph.nodes if not n.is_core}]
+        # a lobby / foyer / entrance hall, else the hub, else any circulation room, else any room
+        # but a core
+        tiers = [entry, {hub}, circulation, {n.id for n in self.floor.graph.nodes if not n.is_core}]
         for tier in tiers:
             self._entrance_options(tier, asset)
             if self.plan.entrance_options:
