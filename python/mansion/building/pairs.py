@@ -51,7 +51,7 @@ import numpy as np
 from mansion.building.load_bearing import first_round_groups
 from mansion.building.merge import DOOR_WIDTH, block_side, mask_defects, square_cover
 from mansion.building.recut import (
-    _connected, _kept_walls, _least, _passable, _redrawn, below_width, held_walls, walls_hold,
+    _box_round, _connected, _kept_walls, _least, _passable, _redrawn, below_width, held_walls, walls_hold,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
@@ -194,12 +194,10 @@ def _best_pair(
     cell = grid.cell_size
     k_room, k_other = ids.index(room), ids.index(other)
     both = (labels == k_room) | (labels == k_other)
-    rr, cc = np.nonzero(both)
     # the two rooms' box and the cells round it (every wall of the two lies there)
-    y0, y1 = max(int(rr.min()) - 1, 0), min(int(rr.max()) + 2, labels.shape[0])
-    x0, x1 = max(int(cc.min()) - 1, 0), min(int(cc.max()) + 2, labels.shape[1])
-    sub = labels[y0:y1, x0:x1].astype(np.int32)
-    cells = both[y0:y1, x0:x1]
+    box = _box_round(both)
+    sub = labels[box].astype(np.int32)
+    cells = both[box]
     own, theirs = sub == k_room, sub == k_other
     nodes = {n.id: n for n in graph.nodes}
     r_room, r_other = layout.room(room), layout.room(other)
@@ -269,6 +267,6 @@ def _best_pair(
         if not walls_hold(new, held, cell, min_contact):
             continue
         whole = labels.astype(np.int32)
-        whole[y0:y1, x0:x1] = new
+        whole[box] = new
         return _redrawn(layout, whole)
     return None
