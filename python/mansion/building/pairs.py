@@ -205,11 +205,14 @@ def _best_pair(
     least = _least(nodes[room]) / unit
     other_least = min(_least(nodes[other]), r_other.area) / unit
     targets = np.array([max(r_room.target_area, _least(nodes[room])), r_other.target_area]) / unit
+    total, total_own = int(cells.sum()), int(own.sum())
+    covered, every = _covered(cells, needed_width(r_room.room_type, building_type), cell)
+    if total + EPS < least + other_least or every + EPS < (1 - TOLERANCE - SHARE_EPS) * least:
+        return None  # the two cannot hold both minimums, or their cells no room at its width
     # each side of each cut for the room (the part a cut takes off, then the rest): its cells,
     # those it keeps of its own, the other's
     parts = _cuts(cells.shape)
     part_cells, part_own = _counts(cells, parts), _counts(own, parts)
-    total, total_own = int(cells.sum()), int(own.sum())
     area = np.concatenate([part_cells, total - part_cells])
     kept = np.concatenate([part_own, total_own - part_own])
     rest = total - area
@@ -222,7 +225,6 @@ def _best_pair(
     # outside every square of its width those cells hold (the same of the other room's side
     # where it was not below its width): counted for every cut at once, the splits judged in
     # full fall to a third
-    covered, _ = _covered(cells, needed_width(r_room.room_type, building_type), cell)
     sound = area - covered <= (TOLERANCE + SHARE_EPS) * area
     other_defects = mask_defects(theirs, r_other.room_type, building_type, cell)
     if "narrow" not in other_defects:
