@@ -359,7 +359,8 @@ STORE_POCKETS = True
 #: 75 / 51 on the offline hundreds), "families" (a region and the rooms cut from it laid out again
 #: as a row, :func:`mansion.building.families.relay_families`), "pairs" (a room and a room beside
 #: it cut again together by one straight or corner cut, :func:`mansion.building.pairs.recut_pairs`;
-#: below width 45 / 27 -> 41 / 26 on the offline hundreds, 6 / 6 rooms more kept), "stores"
+#: below width 45 / 27 -> 41 / 26 on the offline hundreds, 6 / 6 rooms more kept; with the
+#: libraries' and supermarkets' corridor hubs 36 / 20 -> 32 / 19), "stores"
 #: (:data:`STORE_POCKETS`), "halls" (a room's arms that carry its doors made halls off it,
 #: :func:`mansion.building.halls.hall_arms`; measured alone on the offline hundreds, below width
 #: 101 / 66 -> 90 / 60 with 14 / 11 halls), "merges" (:data:`MERGE_NARROW`), "drops" (a family
