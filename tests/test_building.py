@@ -789,3 +789,33 @@ def test_sample_spans_every_type_and_height() -> None:
     cases = [case(s) for s in SAMPLE]
     assert {k for k, _ in cases} == set(TYPES)
     assert min(f for _, f in cases) == 1 and max(f for _, f in cases) >= 8
+
+
+def test_a_room_below_its_width_and_a_room_beside_it_are_cut_again_together() -> None:
+    """The hotel of the realism hundreds' seed 166 lays its ground floor's lounge out as an L
+    round the conference room, an arm of it narrower than a lounge; no rectangle of the lounge's
+    size mends it (what it leaves the conference room is not one piece), nor a wall pushed out, a
+    family laid out again or a strip handed off. Cut again together by one straight or corner
+    cut (``mansion.building.pairs``, the "pairs" of ``steps.NARROW_MENDS``), the two rooms keep
+    their minimums and the lounge its width, with no room more elongated, a sliver or below its
+    area, and none lost."""
+    from mansion.building import steps
+    from mansion.eval.realism import Figures, bench_case, building_rooms, summarise
+
+    kind, floors, description = bench_case(166)
+    assert "pairs" in steps.NARROW_MENDS
+
+    def ground() -> tuple[set[str], int, Figures]:
+        b = generate_building(description, building_type=kind, floors=floors, seed=166)
+        floor = b.floors[0]
+        return steps.narrow_rooms(floor.layout.rooms, kind), len(floor.layout.rooms), summarise(building_rooms(b))
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "NARROW_MENDS", tuple(m for m in steps.NARROW_MENDS if m != "pairs"))
+        narrow, rooms, before = ground()
+    assert narrow == {"lounge"}
+    narrow_after, rooms_after, after = ground()
+    assert narrow_after == set() and rooms_after == rooms
+    assert after.below_width < before.below_width
+    assert after.below_area <= before.below_area and after.sliver <= before.sliver
+    assert after.elongated <= before.elongated and after.no_square == 0

@@ -175,10 +175,7 @@ def recut_narrow_rooms(
     nodes = {n.id: n for n in graph.nodes}
 
     def narrow(rooms: dict[str, LayoutRoom], rid: str) -> bool:
-        r = rooms[rid]
-        if _wide_rectangle(r, building_type):
-            return False
-        return bool(shape_measure(r, ("narrow", needed_width(r.room_type, building_type))))
+        return below_width(rooms[rid], building_type)
 
     children: dict[str, list[str]] = {}
     for child, head in sorted(parent.items()):
@@ -231,6 +228,14 @@ def hand_off_strips(
         layout, graph, same_region,
         lambda lay, room, nodes, group: _handed_off(lay, graph, room, nodes, group, building_type, min_contact, cell),
     )
+
+
+def below_width(room: LayoutRoom, building_type: str | None) -> bool:
+    """Whether ``room`` is below its clear width (``mansion eval realism``'s "narrow"), a
+    rectangle at least that wide each way told without drawing its outline."""
+    if _wide_rectangle(room, building_type):
+        return False
+    return bool(shape_measure(room, ("narrow", needed_width(room.room_type, building_type))))
 
 
 def _wide_rectangle(room: LayoutRoom, building_type: str | None) -> bool:

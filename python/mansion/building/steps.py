@@ -73,6 +73,7 @@ from mansion.building.families import relay_families
 from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.building.outlines import outline, shape_measure
+from mansion.building.pairs import recut_pairs
 from mansion.building.recut import _least, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.stores import store_pockets
@@ -356,14 +357,17 @@ STORE_POCKETS = True
 #: The mends of rooms still below their width, in order: "sides" (a room's walls pushed out into
 #: the rooms beside it, :func:`mansion.building.sides.widen_sides`; first, below width 75 / 56 ->
 #: 75 / 51 on the offline hundreds), "families" (a region and the rooms cut from it laid out again
-#: as a row, :func:`mansion.building.families.relay_families`), "stores" (:data:`STORE_POCKETS`),
-#: "halls" (a room's arms that carry its doors made halls off it,
+#: as a row, :func:`mansion.building.families.relay_families`), "pairs" (a room and a room beside
+#: it cut again together by one straight or corner cut, :func:`mansion.building.pairs.recut_pairs`;
+#: below width 45 / 27 -> 41 / 26 on the offline hundreds, 6 / 6 rooms more kept; with the
+#: libraries' and supermarkets' corridor hubs 36 / 20 -> 32 / 19), "stores"
+#: (:data:`STORE_POCKETS`), "halls" (a room's arms that carry its doors made halls off it,
 #: :func:`mansion.building.halls.hall_arms`; measured alone on the offline hundreds, below width
 #: 101 / 66 -> 90 / 60 with 14 / 11 halls), "merges" (:data:`MERGE_NARROW`), "drops" (a family
 #: too tight for its rooms laid out again without one). Those that keep every room come first:
 #: with the merges before the stores and halls, the same rooms are left below their width on the
 #: offline hundreds (80 / 57) for 10 / 10 rooms fewer. A mend left out of the tuple is off.
-NARROW_MENDS = ("sides", "families", "stores", "halls", "merges", "drops")
+NARROW_MENDS = ("sides", "families", "pairs", "stores", "halls", "merges", "drops")
 #: Why such a room is named in the floor's relaxations.
 NARROW_WHY = "laid out narrower than its clear width"
 
@@ -971,6 +975,9 @@ def mend_narrow(
         # a region and the rooms cut from it, one of them still below its width, laid out
         # again as a row along one side with the region's room taking the rest
         "families": lambda lay, g: relay_families(lay, g, kind, min_contact=min_contact, keep=keep),
+        # a room still below its width and a room beside it cut again together, the wall
+        # between them drawn again straight or with one corner (mansion.building.pairs)
+        "pairs": lambda lay, g: (recut_pairs(lay, g, kind, min_contact=min_contact, same_region=carried), g, []),
         # what is below its width only by a pocket (beside a core, past a stair) keeps the
         # pocket as a store of its own
         "stores": lambda lay, g: store_pockets(lay, g, kind, NARROW_WHY, min_contact=min_contact),
