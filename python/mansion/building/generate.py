@@ -130,7 +130,7 @@ def generate_building(
             is laid out again whole under a seed of its own, keeping the layout with fewer such
             rooms (offline planner; see
             :func:`mansion.building.steps.solve_building_floor`). 0 (the default) for time; 1
-            cuts the offline hundred's rooms below their width from 45 to 27 for about 1.1
+            cuts the offline hundred's rooms below their width from 32 to 23 for about 1.12
             times the generation time.
         progress: called as ``progress(message, done, total)`` as floors are solved.
 
