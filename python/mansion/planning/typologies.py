@@ -291,15 +291,16 @@ SUPERMARKET = Typology(
     # The ground floor: a corridor hub with the sales floor a room off it, at 200 m² (the floors
     # are 320-500 m²; a sales floor is most of a store). With the sales floor as the hub it took
     # what its rooms left, a ring of 1.5-3 m aisles round back-of-house rooms cut in the middle
-    # of the floor, and no 6 m square held its 100 m² minimum (the supermarkets of the offline
-    # hundreds: rooms below their width or area 6 / 4 -> 0 / 0; at the vocabulary's 250 m² the
-    # same, with 38 rooms fewer, optional ones dropped, than the 17 fewer at 200 m²).
+    # of the floor, and no 6 m square held its 100 m² minimum. On the supermarkets of the
+    # offline hundreds, rooms below their width or area 6 / 4 -> 0 / 0, 17 optional rooms fewer;
+    # at the vocabulary's 250 m² also 0 / 0 but 38 rooms fewer; at 120-180 m² 4 to 8 bad rooms.
     FloorTemplate(
         "corridor",
         (
-            Rm("sales_floor", area=200.0), Rm("entrance_vestibule"), Rm("checkout_area"), Rm("produce_section", optional=True),
-            Rm("bakery", optional=True), Rm("cold_storage", zone="back_of_house"),
-            Rm("freezer_room", zone="back_of_house"), Rm("warehouse", zone="back_of_house"),
+            Rm("sales_floor", area=200.0), Rm("entrance_vestibule"), Rm("checkout_area"),
+            Rm("produce_section", optional=True), Rm("bakery", optional=True),
+            Rm("cold_storage", zone="back_of_house"), Rm("freezer_room", zone="back_of_house"),
+            Rm("warehouse", zone="back_of_house"),
             Rm("receiving_area", zone="back_of_house", optional=True),
             Rm("staff_room", zone="back_of_house", optional=True),
             Rm("toilet", 2, zone="back_of_house"),
@@ -317,7 +318,9 @@ SUPERMARKET = Typology(
     stacks=("uniform", "setback"),
     stair_only_floors=1,
     reserve=(0.19, 0.26),
-    description="a sales floor off a corridor with checkouts by the entrance, cold storage and stores behind",
+    description=(
+        "a sales floor off a corridor with checkouts by the entrance, cold storage and stores behind"
+    ),
 )
 
 LIBRARY = Typology(

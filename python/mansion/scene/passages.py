@@ -219,8 +219,8 @@ class _Planner:
         asset = _pick(options, self.seed, self.floor.index, "entrance")
         circulation = {n.id for n in self.floor.graph.nodes
                        if not n.is_core and room_kind(n.room_type).role == "circulation"}
-        # a lobby / foyer / entrance hall, else the hub, else any circulation room, else any room
-        # but a core
+        # an entry room (lobby, foyer, entrance hall, vestibule), else the hub, else any
+        # circulation room, else any room but a core
         tiers = [entry, {hub}, circulation, {n.id for n in self.floor.graph.nodes if not n.is_core}]
         for tier in tiers:
             self._entrance_options(tier, asset)
