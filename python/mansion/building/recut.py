@@ -173,10 +173,6 @@ def recut_narrow_rooms(
     group = first_round_groups(graph) if same_region else None
     has_children = set(parent.values())
     nodes = {n.id: n for n in graph.nodes}
-
-    def narrow(rooms: dict[str, LayoutRoom], rid: str) -> bool:
-        return below_width(rooms[rid], building_type)
-
     children: dict[str, list[str]] = {}
     for child, head in sorted(parent.items()):
         children.setdefault(head, []).append(child)
@@ -186,7 +182,7 @@ def recut_narrow_rooms(
         up = parent.get(room)
         if (
             up is None or nodes[room].is_core
-            or room_design(rooms[room].room_type).circulation or not narrow(rooms, room)
+            or room_design(rooms[room].room_type).circulation or not below_width(rooms[room], building_type)
         ):
             continue
         own = children.get(room, [])
