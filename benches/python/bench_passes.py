@@ -1,8 +1,9 @@
 """What the realism passes cost (issue 14's bound: generation no more than 1.5× slower): the
 offline buildings of :func:`mansion.eval.realism.bench_case` generated with every pass on (the
 solver's repair and rebalance, then the floor's mends: recut, merges, widths, dissolve, and
-``--relayouts``) and with every pass off (the same solver settings without repair and rebalance,
-which also leaves the mends and the second layouts out), building by building in turn, the order
+``--relayouts``; the banks layout of hotels' guest floors) and with every pass off (the same solver
+settings without repair and rebalance, which also leaves the mends and the second layouts out, and
+every floor to the cut rounds), building by building in turn, the order
 alternating so neither side always runs on a warm cache.
 
 Process time, so other work on the machine counts less than in wall time; run it with
@@ -34,18 +35,21 @@ def passes_off(cell_size: float, *args: Any, **kwargs: Any) -> Any:
 
 
 ON: Callable[..., Any] = steps.floor_settings
+BANKS = steps.BANKS
 
 
 def timed(seed: int, on: bool, relayouts: int) -> float:
     """Process seconds to generate building ``seed`` with every pass on or off."""
     kind, floors, text = bench_case(seed)
     steps.floor_settings = ON if on else passes_off
+    steps.BANKS = on
     try:
         start = time.process_time()
         generate_building(text, building_type=kind, floors=floors, seed=seed, relayouts=relayouts if on else 0)
         return time.process_time() - start
     finally:
         steps.floor_settings = ON
+        steps.BANKS = BANKS
 
 
 def main() -> None:

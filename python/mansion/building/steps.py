@@ -58,6 +58,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 
+from mansion.building.banks import bank_graph, bank_layout
 from mansion.building.checks import check_building
 from mansion.building.load_bearing import (
     SkeletonSeedPlanner,
@@ -77,13 +78,14 @@ from mansion.building.pairs import recut_pairs
 from mansion.building.recut import _least, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.stores import store_pockets
-from mansion.exceptions import InfeasibleLayoutError
+from mansion.exceptions import InfeasibleLayoutError, InvalidInputError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
 from mansion.models.layout import LayoutRoom
 from mansion.models.building import Building, BuildingProgram, Floor, Palette, PositionWord, RoomCard
 from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
 from mansion.models.room_shape import box_aspect, mostly_narrower
+from mansion.planning.program import floor_template
 
 __all__ = [
     "ATTEMPTS",
@@ -754,6 +756,10 @@ def _solve_building_floor(
 
         text_planner = text_seed_planner(description, graph, fp, solver.get("cell_size", 0.5))
         planner = text_planner
+    if BANKS and planner is None and not program.load_bearing_walls and start == 0:
+        banked = _banked_floor(program, index, graph, fp, solver, seed)
+        if banked is not None:
+            return banked, False
     if program.load_bearing_walls and below is not None and below.carried_walls:
         walls = carry_walls(below.carried_walls, fp)
         if walls:
@@ -876,6 +882,59 @@ def _solve_building_floor(
     # below width 30 / 19 -> 28 / 17, below area 3 / 1 -> 2 / 1)
     return floor, repairs and seed_planner is None and text_planner is None
 
+
+
+#: Whether floors whose template asks for it (a hotel's guest-room floors) are laid out whole as
+#: a double-loaded corridor (:mod:`mansion.building.banks`) where the floor's shape allows, before
+#: the cut rounds. Measured on the offline hundreds: see the README's realism section.
+BANKS = True
+
+
+def _banked_floor(
+    program: BuildingProgram, index: int, graph: RoomGraph, fp: Footprint, solver: dict[str, Any], seed: int,
+) -> Floor | None:
+    """Floor ``index`` laid out as a double-loaded corridor (:func:`bank_layout`) when its
+    template asks for it and the floor's shape gives a sound layout, else None. The guest rooms
+    no bay is left for are left out (a floor keeps one of each type and the rooms the
+    description asked for), each with a relaxation note, as are the wing corridors the banks'
+    corridor replaces."""
+    try:
+        wanted = floor_template(program.building_type, index, program.floor_count).banks
+    except InvalidInputError:
+        return None
+    flat = bank_graph(graph) if wanted else None
+    if flat is None:
+        return None
+    asked = {i for r in program.requests if r.honoured for i in r.room_ids}
+    count: dict[str, int] = {}
+    for n in flat.nodes:
+        count[n.room_type] = count.get(n.room_type, 0) + 1
+    hub = flat.hub.id
+    spare = {
+        n.id for n in flat.nodes
+        if n.id != hub and not n.is_core and count[n.room_type] > 1 and n.id not in asked
+        and not room_design(n.room_type).circulation and n.type != "area"
+    }
+    found = bank_layout(
+        flat, fp, program.building_type, cell=solver.get("cell_size", 0.5),
+        min_contact=solver.get("min_contact", 1.0), spare=spare,
+    )
+    if found is None:
+        return None
+    layout, kept, dropped = found
+    floor_program = program.floor_program(index)
+    notes = {r.id: r.notes for r in floor_program.rooms}
+    folded = sorted({n.id for n in graph.nodes} - {n.id for n in flat.nodes})
+    relax = [*floor_program.relaxations]
+    relax += [f"{wing} merged into {hub}: one corridor serves both banks of rooms" for wing in folded]
+    ensuites = {e.source: e.target for e in flat.edges if e.source != hub}
+    for rid in dropped:
+        also = f" (with {ensuites[rid]})" if rid in ensuites else ""
+        relax.append(f"{rid} left out{also}: no bay along the corridor was left for it")
+    return Floor(
+        index=index, graph=kept, footprint=fp, layout=layout, room_cards=_room_cards(kept, notes),
+        rng_seed=derived_seed(seed, "banks", index), attempts=1, relaxations=relax,
+    )
 
 
 def _mended_floor(

@@ -47,6 +47,7 @@ __all__ = [
     "connectivity",
     "core_requests",
     "fit_minimums",
+    "floor_template",
     "min_target",
     "min_arm",
     "resolve_constraints",
@@ -290,6 +291,13 @@ def _template(typ: Typology, role: str) -> FloorTemplate:
     if role == "top" and typ.top is not None:
         return typ.top
     return typ.upper
+
+
+def floor_template(building_type: str, index: int, floors: int) -> FloorTemplate:
+    """The template floor ``index`` of a ``floors``-storey building of ``building_type`` is
+    programmed from (a bay typology's: its ground template)."""
+    typ = typology(building_type)
+    return _template(typ, _role(typ, index, floors))
 
 
 def _apply_placements(rules: list[Rm], wants: list[FloorRequest], index: int) -> list[Rm]:

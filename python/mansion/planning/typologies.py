@@ -54,6 +54,10 @@ class FloorTemplate:
     zones: tuple[Zone, ...] = ()
     #: (room type, room type) pairs that must share a wall (both present on the floor).
     adjacent: tuple[tuple[str, str], ...] = ()
+    #: Laid out whole as a double-loaded corridor with its rooms in bays on both sides where the
+    #: floor's shape allows (:mod:`mansion.building.banks`; a hotel's guest-room floors), else
+    #: by the cut rounds.
+    banks: bool = False
 
 
 @dataclass(frozen=True)
@@ -393,11 +397,13 @@ HOTEL = Typology(
     upper=FloorTemplate(
         "corridor",
         (Rm("guest_room", 4, fill=True), Rm("housekeeping"), Rm("linen_room", optional=True)),
+        banks=True,
     ),
     top=FloorTemplate(
         "corridor",
         (Rm("suite", 2), Rm("guest_room", 2, fill=True), Rm("housekeeping"),
          Rm("spa", optional=True)),
+        banks=True,
     ),
     shapes=("rectangle", "l_shape", "t_shape", "u_shape"),
     stacks=("uniform", "podium"),

@@ -1,0 +1,163 @@
+"""The banks layout: a hotel's guest-room floor as a double-loaded corridor (issue 14)."""
+
+from __future__ import annotations
+
+import pytest
+from shapely.geometry import Polygon
+
+from mansion import generate_building
+from mansion.building import steps
+from mansion.building.banks import bank_graph, bank_layout
+from mansion.eval.realism import bench_case
+from mansion.models import Footprint, RoomGraph
+from mansion.models.footprint import Core
+from mansion.models.graph import RoomEdge, RoomNode
+from mansion.models.room_design import room_design
+
+def _stairs(width: float = 15.0, length: float = 30.0) -> list[Core]:
+    """A stair in two opposite corners of a ``width`` x ``length`` slab."""
+    return [
+        Core(id="stair_1", type="stair", x=(0.0, 6.0), y=(0.0, 3.0)),
+        Core(id="stair_2", type="stair", x=(width - 6.0, width), y=(length - 3.0, length)),
+    ]
+
+
+STAIRS = _stairs()
+
+
+def _hotel_graph(guest_rooms: int, wing: bool = False) -> RoomGraph:
+    """A corridor hub with two stairs, a housekeeping room and guest rooms with their ensuites
+    (off a wing corridor when ``wing``)."""
+    nodes = [RoomNode(id="corridor", type="main", area=45.0, room_type="corridor")]
+    edges = []
+    for core in STAIRS:
+        nodes.append(RoomNode(id=core.id, type="stair", area=18.0, room_type="stair"))
+        edges.append(RoomEdge(source="corridor", target=core.id, kind="access"))
+    nodes.append(RoomNode(id="housekeeping", type="Entities", area=10.0, room_type="housekeeping"))
+    edges.append(RoomEdge(source="corridor", target="housekeeping", kind="access"))
+    up = "corridor"
+    if wing:
+        nodes.append(RoomNode(id="wing_1", type="area", area=10.0, room_type="corridor"))
+        edges.append(RoomEdge(source="corridor", target="wing_1", kind="access"))
+        up = "wing_1"
+    for k in range(1, guest_rooms + 1):
+        room = f"guest_room_{k}"
+        nodes.append(RoomNode(id=room, type="Entities", area=24.0, room_type="guest_room"))
+        nodes.append(RoomNode(id=f"{room}_ensuite", type="Entities", area=4.5, room_type="ensuite"))
+        edges.append(RoomEdge(source=up, target=room, kind="access"))
+        edges.append(RoomEdge(source=room, target=f"{room}_ensuite", kind="access"))
+    return RoomGraph(nodes=nodes, edges=edges)
+
+
+def _slab(width: float = 15.0, length: float = 30.0) -> Footprint:
+    return Footprint(
+        polygon=[(0.0, 0.0), (width, 0.0), (width, length), (0.0, length)], cores=_stairs(width, length),
+    )
+
+
+def _guest_rooms_sound(layout, graph: RoomGraph, outline: Polygon) -> None:
+    """Every guest room one sound piece on the corridor, on the facade and beside its ensuite."""
+    rooms = {r.id: r for r in layout.rooms}
+    for node in graph.nodes:
+        if node.room_type != "guest_room":
+            continue
+        room = rooms[node.id]
+        shape = Polygon(room.polygon, room.holes)
+        assert shape.area >= room_design("guest_room").min_area
+        door = layout.adjacency(node.id, graph.hub.id)
+        assert door is not None and door.longest >= 1.0, node.id
+        bath = layout.adjacency(node.id, f"{node.id}_ensuite")
+        assert bath is not None and bath.longest >= 1.0, node.id
+        # a window: part of its outline on the facade
+        assert shape.boundary.intersection(outline.boundary).length >= 2.0, node.id
+
+
+def test_a_slab_is_laid_out_as_a_double_loaded_corridor() -> None:
+    graph = _hotel_graph(8)
+    fp = _slab()
+    found = bank_layout(graph, fp, "hotel", spare={f"guest_room_{k}" for k in range(1, 9)})
+    assert found is not None
+    layout, kept, dropped = found
+    assert dropped == [] and kept == graph
+    assert not steps.narrow_rooms(layout.rooms, "hotel")
+    assert not steps.unfit_rooms(layout.rooms, kept)
+    assert sum(steps.misshapen(layout.rooms)) == 0
+    _guest_rooms_sound(layout, kept, Polygon(fp.polygon))
+    # the corridor runs down the slab's middle, one piece, and reaches both stairs
+    corridor = next(r for r in layout.rooms if r.id == "corridor")
+    assert not corridor.holes
+    x0, y0, x1, y1 = Polygon(corridor.polygon).bounds
+    assert y1 - y0 >= 20.0 and x1 - x0 <= 8.0
+    for core in STAIRS:
+        assert layout.adjacency("corridor", core.id).longest >= 1.0
+    # bathrooms back onto each other in pairs
+    ensuites = [r.id for r in layout.rooms if r.room_type == "ensuite"]
+    assert any(layout.adjacency(a, b) is not None for a in ensuites for b in ensuites if a < b)
+
+
+def test_wing_corridors_fold_into_the_hub() -> None:
+    graph = _hotel_graph(4, wing=True)
+    flat = bank_graph(graph)
+    assert flat is not None
+    assert "wing_1" not in {n.id for n in flat.nodes}
+    assert flat.hub.area == pytest.approx(55.0)
+    assert {e.source for e in flat.edges if e.target.startswith("guest_room_") and "ensuite" not in e.target} == {"corridor"}
+
+
+def test_a_floor_with_another_kind_of_sub_hub_is_left_to_the_cut_rounds() -> None:
+    graph = _hotel_graph(2)
+    graph = RoomGraph(
+        nodes=[*graph.nodes, RoomNode(id="toilets", type="area", area=4.0, room_type="toilet_lobby"),
+               RoomNode(id="toilet", type="Entities", area=3.0, room_type="toilet")],
+        edges=[*graph.edges, RoomEdge(source="corridor", target="toilets", kind="access"),
+               RoomEdge(source="toilets", target="toilet", kind="access")],
+    )
+    assert bank_graph(graph) is None
+
+
+def test_guest_rooms_without_a_bay_are_left_out_only_when_they_may_be() -> None:
+    graph = _hotel_graph(14)
+    fp = _slab()
+    why: list[str] = []
+    assert bank_layout(graph, fp, "hotel", why=why) is None  # every room must stay: they do not fit
+    assert why and all(w.startswith("at ") and "m: " in w for w in why)
+    assert any("do not fit" in w for w in why)
+    spare = {f"guest_room_{k}" for k in range(1, 15)}
+    layout, kept, dropped = bank_layout(graph, fp, "hotel", spare=spare)
+    assert dropped and set(dropped) <= spare
+    ids = {r.id for r in layout.rooms}
+    for rid in dropped:
+        assert rid not in ids and f"{rid}_ensuite" not in ids
+    assert {n.id for n in kept.nodes} == ids
+    _guest_rooms_sound(layout, kept, Polygon(fp.polygon))
+
+
+def test_a_slab_too_narrow_for_two_banks_is_left_to_the_cut_rounds() -> None:
+    """9 m across holds no two 5 m bays and a corridor: no depth is even tried."""
+    why: list[str] = []
+    assert bank_layout(_hotel_graph(4), _slab(width=9.0), "hotel", why=why) is None
+    assert why == []
+
+
+def test_a_hotel_guest_floor_of_the_realism_hundred_is_banks() -> None:
+    """Hotel 12 of the realism hundred: its first guest floor, a 15 m slab, had come out of the
+    cut rounds as two wings of rooms round ragged corridors, a guest room below its width and
+    one left out. Laid out as banks it keeps all nine guest rooms, each on the corridor and the
+    facade with its ensuite, and no room is below its area or width."""
+    kind, floors, description = bench_case(12)
+    building = generate_building(description, building_type=kind, floors=floors, seed=12)
+    floor = building.floors[1]
+    assert floor.layout.diagnostics.rounds == []  # not the cut rounds
+    assert any(note.startswith("wing_1 merged into corridor") for note in floor.relaxations)
+    guest = [n for n in floor.graph.nodes if n.room_type == "guest_room"]
+    assert len(guest) == 9
+    assert not steps.narrow_rooms(floor.layout.rooms, kind)
+    assert not steps.unfit_rooms(floor.layout.rooms, floor.graph)
+    _guest_rooms_sound(floor.layout, floor.graph, Polygon(floor.footprint.polygon))
+
+
+def test_banks_off_leaves_the_floor_to_the_cut_rounds(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(steps, "BANKS", False)
+    kind, floors, description = bench_case(12)
+    floor = generate_building(description, building_type=kind, floors=floors, seed=12).floors[1]
+    assert floor.layout.diagnostics.rounds
