@@ -7,47 +7,56 @@ stop. Grown by the cut rounds (:mod:`mansion.floorplan.solve`) such a floor came
 rooms round ragged corridors: guest rooms wrapped round their ensuites, rooms 90 m² beside rooms
 below their 3.3 m width, half a floor's rooms left out (issue 14).
 
-The layout here is drawn on the solver's grid (0.5 m cells) in four steps:
+The layout here is drawn on the solver's grid (0.5 m cells) in four steps, for each bay depth
+``D`` from the deepest the floor allows (at most :data:`MAX_DEPTH`) down to :data:`MIN_DEPTH`:
 
 1. **Corridor.** Every free cell gets its distance to the facade along the four axes (the nearest
    outside cell in a straight line; cores count as inside, so a bay runs behind a core). Cells
-   farther than the bay depth ``D`` from every facade are the corridor: on a slab a strip down the
-   middle, on an L, T or U a strip that turns with the arms, round a courtyard a ring. Each core
-   the corridor does not reach gets a straight stub as wide as the corridor, the shortest there is.
-2. **Frontages.** The cells within ``D`` of a facade are the banks. Each cell belongs to the
-   facade it faces (a corner square to the longer of its two facades, so the bays along it stay
-   rectangles); a facade's cells, in order along it, are a *run*. A run too short for any room
-   becomes corridor: the corridor then reaches the facade at the slab's ends, as real ones do.
-3. **Bays.** The rooms are packed into the runs, larger first: each asks for the width its clear
-   width, minimum area and proportions need at this depth (a guest room with its ensuite: its
-   3.3 m and the ensuite's 1.5 m, 5 m in all), the run's spare width goes to its guest rooms and
-   wards. A room that finds no run is left out when the floor may do without it (a guest room of
-   several), else the depth fails. Rooms with an ensuite get it at the corridor end of their bay,
-   on alternate sides, so two bathrooms share a wall as real hotels pair them.
-4. **Checks.** Every room must come out one piece, at its minimum area, with no part narrower
-   than its clear width, not elongated, and every door of the graph must have a wall of at least
-   ``min_contact`` metres; else the next depth is tried, and the caller falls back to the cut
-   rounds when none passes.
+   farther than ``D`` from every facade are the corridor: on a slab a strip down the middle, on an
+   L, T or U a strip that turns with the arms. Each core the corridor does not reach gets a stub
+   as wide as the corridor: a square of its width slid from beside the core to the corridor, the
+   fewest steps with a turn costing :data:`_TURN` (straight where it can be, else an L).
+2. **Runs.** The cells within ``D`` of a facade are the banks. Each faces the facade whose line
+   of such cells is longest, cores on it counted in (a corner square goes with the longer side,
+   so the bays along it stay rectangles); a facade's cells, position by position along it, make
+   *runs* of one depth (behind a core the cells are shallower, and have no window). A run no
+   room fits faces its other facade where it can, else becomes corridor (the corridor then
+   reaches the facade at a slab's end, a window at its end); so do the positions at a run's ends
+   that the corridor does not touch, more than :data:`_CORNER` of them (a corner square whose
+   room would have no door).
+3. **Bays.** The rooms are packed into the runs: the rooms the floor must keep first, service
+   rooms where they waste least (the shallow runs behind cores), rooms that want daylight in the
+   facade runs with most width left. Each asks for the width its clear width, minimum area and
+   proportions need at the run's depth, with its ensuite (a guest room 3.3 m and its ensuite
+   1.5 m: a 5 m bay); a run's spare width goes to its guest rooms, in steps at which an ensuite
+   still fits. A room no run holds is left out when the floor may do without it (``spare``), else
+   the depth fails. Ensuites go at the corridor end of their bay, on alternate sides, so two
+   bathrooms share a wall as hotels pair them.
+4. **Checks** (:func:`_fault`). Every room one piece, at its minimum area, with no shape defect
+   (:func:`~mansion.building.merge.mask_defects`: no part below its clear width, no sliver, not
+   elongated), no larger than :data:`OVERSIZE` times its planned area and :data:`OVERSIZE_M2` m²
+   over it, every door of the graph with a wall of ``min_contact`` metres, the corridor at most
+   :data:`MAX_CORRIDOR_SHARE` of the free area. The first depth that passes is kept; when none
+   does, the caller lays the floor out by the cut rounds.
 
-Depths are tried from the deepest the floor allows (at most :data:`MAX_DEPTH`) down to
-:data:`MIN_DEPTH`. Only floors whose rooms hang off the hub (wing corridors are folded into it) and
-whose rooms' only children are their ensuites are laid out here.
+Only floors whose rooms hang off the hub (wing corridors are folded into it,
+:func:`bank_graph`) and whose rooms' only children are their ensuites are laid out here.
 """
 
 from __future__ import annotations
 
 import heapq
 import math
-from functools import lru_cache
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 
 from mansion import _core
 from mansion.building.merge import grid_adjacencies, mask_defects, rooms_from_grid
 from mansion.models.graph import RoomEdge, RoomGraph
-from mansion.models.layout import Diagnostics, FloorLayout, LabelGrid, LayoutRoom
 from mansion.models.building import Footprint
+from mansion.models.layout import Diagnostics, FloorLayout, LabelGrid, LayoutRoom
 from mansion.models.room_design import design_key, needed_width, room_design
 
 __all__ = ["MAX_DEPTH", "MIN_DEPTH", "bank_layout", "bank_graph"]
@@ -58,8 +67,8 @@ MAX_DEPTH = 9.0
 #: The shallowest bay (m): a guest room 5 m wide and 5 m deep keeps 19.75 m² past its ensuite.
 MIN_DEPTH = 5.0
 #: The most of a floor's free area its corridor may take (else the cut rounds lay it out): the
-#: hotels' layouts of the offline hundreds realise about a quarter as circulation.
-MAX_CORRIDOR_SHARE = 0.3
+#: hotels' programs hold back 26-38 % of a floor for circulation (``Typology.reserve``).
+MAX_CORRIDOR_SHARE = 0.4
 #: A room is not drawn larger than this many times its planned area and this many m² over it
 #: (a housekeeping room that takes a corner square of the floor).
 OVERSIZE = 2.0
@@ -68,6 +77,8 @@ OVERSIZE_M2 = 15.0
 _ASPECT = 2.9
 #: Proportions no ensuite is drawn beyond (the design table's for bathrooms).
 _ENSUITE_ASPECT = 2.5
+#: How far an ensuite's drawn area may stray from its planned area (a share of it).
+_ENSUITE_AREA = 0.25
 
 _DIRS = ("down", "up", "left", "right")
 #: Sub-hubs folded into the banks' corridor (a toilet lobby, also circulation, is not one).
@@ -279,6 +290,7 @@ class _Item:
     ensuite: str | None = None
     ensuite_width: int = 0
     ensuite_cells: int = 0
+    ensuite_least: int = 0  # its minimum area, cells
     columns: tuple[int, int] = (0, 0)
     run: int = -1
     _widths: dict[int, int] = field(default_factory=dict)
@@ -291,19 +303,19 @@ class _Item:
         return found
 
     def _width(self, depth: int) -> int:
+        if depth < self.need:
+            return 0
         least = max(
             self.need, math.ceil(depth / _ASPECT - 1e-6),
             math.ceil((self.least + self.ensuite_cells * self.ensuite_width) / depth - 1e-6),
         )
-        if self.ensuite is None:
-            return least
-        for wide in range(least, 3 * depth + 1):
-            if any(
-                _bay_fits(wide, depth, a, b, self.room_type, self.building_type)
-                for a, b in _ensuite_shapes(self)
-            ):
-                return wide
-        return 0
+        return next((w for w in range(least, 3 * depth + 1) if self.fits(w, depth)), 0)
+
+    def fits(self, wide: int, depth: int) -> bool:
+        """Whether a bay ``wide`` positions by ``depth`` cells holds it and its ensuite."""
+        return self.ensuite is None or any(
+            _bay_fits(wide, depth, a, b, self.room_type, self.building_type) for a, b in _ensuite_shapes(self)
+        )
 
     def want(self, depth: int) -> int:
         """The positions its planned area asks for at ``depth``."""
@@ -316,13 +328,19 @@ class _Plan:
     dropped: list[str] = field(default_factory=list)
 
 
-def _runs(band: np.ndarray, rays: dict[str, np.ndarray], depth: int, banned: np.ndarray) -> list[_Run]:
+def _runs(
+    band: np.ndarray, rays: dict[str, np.ndarray], depth: int, banned: np.ndarray, cores: np.ndarray,
+) -> list[_Run]:
     """The banks' cells by the facade they face, split into runs of consecutive positions of one
     depth (behind a core a facade's cells are shallower). A cell faces the facade within
-    ``depth`` whose run of such cells is longest (``banned[k]``: cells that may not face the
-    k-th of :data:`_DIRS`)."""
+    ``depth`` whose line of such cells, cores on it counted in, is longest: a corner square goes
+    with the longer facade, even when a core stands on it (``banned[k]``: cells that may not
+    face the k-th of :data:`_DIRS`)."""
     near = {d: band & (rays[d] <= depth) & ~banned[k] for k, d in enumerate(_DIRS)}
-    length = {d: _run_lengths(near[d], 1 if d in ("down", "up") else 0) for d in _DIRS}
+    length = {
+        d: _run_lengths(near[d] | (cores & (rays[d] <= depth)), 1 if d in ("down", "up") else 0)
+        for d in _DIRS
+    }
     choice = np.full(band.shape, -1, dtype=np.int32)
     best_len = np.full(band.shape, -1, dtype=np.int32)
     best_ray = np.full(band.shape, 1 << 20, dtype=np.int32)
@@ -439,6 +457,7 @@ def _items(graph: RoomGraph, cell: float, building_type: str | None, spare: set[
             e = nodes[ensuite[rid]]
             item.ensuite = e.id
             item.ensuite_width = max(cells(needed_width(e.room_type, building_type)), 2)
+            item.ensuite_least = math.ceil(room_design(e.room_type).min_area / sq - 1e-6)
             item.ensuite_cells = max(
                 math.ceil(room_design(e.room_type).min_area / (item.ensuite_width * sq) - 1e-6),
                 round(e.area / (item.ensuite_width * sq)),
@@ -476,7 +495,11 @@ def _pack(items: list[_Item], runs: list[_Run]) -> list[_Item] | None:
 
 
 def _bays(placed: list[_Item], runs: list[_Run]) -> None:
-    """Lay each run's items side by side along it, the run's spare width shared by its banks."""
+    """Lay each run's items side by side along it, the run's spare width shared by its banks:
+    first towards the width each one's planned area asks for, then in turn, each bay only to a
+    width its ensuite still fits (a bay one position wider may hold none: the strip beside the
+    ensuite falls below the room's width). What no bay can take is left to the corridor (a
+    window at its end)."""
     by_run: dict[int, list[_Item]] = {}
     for it in placed:
         by_run.setdefault(it.run, []).append(it)
@@ -489,14 +512,23 @@ def _bays(placed: list[_Item], runs: list[_Run]) -> None:
         widths = [it.width(depth) for it in order]
         spare = n - sum(widths)
         takers = [i for i, it in enumerate(order) if it.bank]
-        # first towards what each asks for, then evenly among the banks; a run of service rooms
-        # alone leaves what they do not ask for to the corridor
+        # a run of service rooms alone leaves what they do not ask for to the corridor
         for i in takers or range(len(order)):
-            give = min(spare, max(0, order[i].want(depth) - widths[i]))
-            widths[i] += give
-            spare -= give
-        for k in range(spare if takers else 0):
-            widths[takers[k % len(takers)]] += 1
+            fits = [w for w in range(widths[i], min(order[i].want(depth), widths[i] + spare) + 1) if order[i].fits(w, depth)]
+            if fits:
+                spare -= fits[-1] - widths[i]
+                widths[i] = fits[-1]
+        moved = bool(takers)
+        while spare > 0 and moved:
+            moved = False
+            for i in takers:
+                wider = next((w for w in range(widths[i] + 1, widths[i] + spare + 1) if order[i].fits(w, depth)), None)
+                if wider is not None:
+                    spare -= wider - widths[i]
+                    widths[i] = wider
+                    moved = True
+                if spare == 0:
+                    break
         t = 0
         for it, wd in zip(order, widths):
             it.columns = (t, t + wd)
@@ -516,16 +548,21 @@ def _bay_fits(wide: int, deep: int, a: int, b: int, room_type: str, building_typ
 
 
 def _ensuite_shapes(item: _Item) -> list[tuple[int, int]]:
-    """(positions along the run, cells deep) an ensuite of ``item`` may take, at its planned
-    area, its clear width at least and no longer than :data:`_ENSUITE_ASPECT` to one: the
-    narrowest first, each also turned."""
+    """(positions along the run, cells deep) an ensuite of ``item`` may take: its clear width at
+    least, within :data:`_ENSUITE_AREA` of its planned area (never below its minimum) and no
+    longer than :data:`_ENSUITE_ASPECT` to one; the narrowest first, then the nearest its planned
+    area, each also turned."""
     cells = item.ensuite_cells * item.ensuite_width
     w = item.ensuite_width
+    lo = max(item.ensuite_least, math.ceil(cells * (1 - _ENSUITE_AREA) - 1e-6))
+    hi = max(lo, math.floor(cells * (1 + _ENSUITE_AREA) + 1e-6))
+    found: list[tuple[int, int, tuple[int, int]]] = []
+    for a in range(w, w + 5):
+        for b in range(max(w, math.ceil(lo / a - 1e-6)), hi // a + 1):
+            if max(a, b) <= _ENSUITE_ASPECT * min(a, b):
+                found.append((a, abs(a * b - cells), (a, b)))
     out: list[tuple[int, int]] = []
-    for a in range(w, w + 6):
-        b = max(w, math.ceil(cells / a - 1e-6))
-        if max(a, b) > _ENSUITE_ASPECT * min(a, b):
-            continue
+    for _, _, (a, b) in sorted(found):
         for shape in ((a, b), (b, a)):
             if shape not in out:
                 out.append(shape)
@@ -564,6 +601,7 @@ def _draw(
                 if (
                     _contact(room, corridor) >= _CORE_CONTACT
                     and not mask_defects(room, room_types[it.id], building_type, cell)
+                    and _core.mask_passable(room) == (0, 1)
                 ):
                     labels[ens] = index[it.ensuite]
                     done = True
@@ -578,15 +616,55 @@ def _draw(
 def _absorb(labels: np.ndarray, hub: int, keep: set[int], building_type: str | None, room_types: list[str], cell: float) -> None:
     """Pieces of the hub cut off from its largest piece (a short run by a core) go to the room
     beside them that shares most wall with them and stays sound (not a core or an ensuite)."""
-    mask = labels == hub
+    comps = _pieces(labels == hub)
+    if len(comps) < 2:
+        return
+    comps.sort(key=lambda m: -int(m.sum()))
+    _hand_off(labels, comps[1:], hub, keep, building_type, room_types, cell)
+
+
+def _hand_off(
+    labels: np.ndarray, comps: list[np.ndarray], hub: int, keep: set[int], building_type: str | None,
+    room_types: list[str], cell: float,
+) -> None:
+    """Give each of ``comps`` (cells of the hub) to the room beside it that shares most wall
+    with it and stays sound and passable; a piece no room takes stays the hub's."""
+    for comp in comps:
+        best: tuple[int, int] | None = None
+        for k in set(np.unique(labels[_touches(np.ones_like(comp), comp) & ~comp]).tolist()):
+            if k < 0 or k == hub or k not in keep:
+                continue
+            touch = _contact(comp, labels == k)
+            if touch and (best is None or touch > best[0]):
+                grown = (labels == k) | comp
+                if not mask_defects(grown, room_types[k], building_type, cell) and _core.mask_passable(grown) == (0, 1):
+                    best = (touch, k)
+        if best is not None:
+            labels[comp] = best[1]
+
+
+def _strips(mask: np.ndarray) -> list[np.ndarray]:
+    """The pieces of ``mask``'s cells that no 2 x 2 block of it covers: strips 0.5 m wide (a
+    core's side left to the corridor), which no agent walks."""
+    block = mask[:-1, :-1] & mask[1:, :-1] & mask[:-1, 1:] & mask[1:, 1:]
+    covered = np.zeros_like(mask)
+    covered[:-1, :-1] |= block
+    covered[1:, :-1] |= block
+    covered[:-1, 1:] |= block
+    covered[1:, 1:] |= block
+    return _pieces(mask & ~covered)
+
+
+def _pieces(mask: np.ndarray) -> list[np.ndarray]:
+    """The 4-connected pieces of ``mask``, each a mask of its own."""
+    out: list[np.ndarray] = []
     seen = np.zeros_like(mask)
-    comps: list[np.ndarray] = []
     h, w = mask.shape
     for r0, c0 in zip(*np.nonzero(mask)):
         if seen[r0, c0]:
             continue
         comp = np.zeros_like(mask)
-        stack = [(r0, c0)]
+        stack = [(int(r0), int(c0))]
         seen[r0, c0] = True
         while stack:
             r, c = stack.pop()
@@ -595,22 +673,8 @@ def _absorb(labels: np.ndarray, hub: int, keep: set[int], building_type: str | N
                 if 0 <= rr < h and 0 <= cc < w and mask[rr, cc] and not seen[rr, cc]:
                     seen[rr, cc] = True
                     stack.append((rr, cc))
-        comps.append(comp)
-    if len(comps) < 2:
-        return
-    comps.sort(key=lambda m: -int(m.sum()))
-    for comp in comps[1:]:
-        best: tuple[int, int] | None = None
-        for k in set(np.unique(labels[_touches(np.ones_like(comp), comp) & ~comp]).tolist()):
-            if k < 0 or k == hub or k not in keep:
-                continue
-            touch = _contact(comp, labels == k)
-            if touch and (best is None or touch > best[0]):
-                grown = (labels == k) | comp
-                if not mask_defects(grown, room_types[k], building_type, cell):
-                    best = (touch, k)
-        if best is not None:
-            labels[comp] = best[1]
+        out.append(comp)
+    return out
 
 
 def _fault(
@@ -629,6 +693,10 @@ def _fault(
             return f"{rid} is in pieces"
         if node.is_core:
             continue
+        uncovered, pieces = _core.mask_passable(mask)
+        if uncovered or pieces != 1:
+            # a part 0.5 m wide, or parts joined by one: no agent passes (mansion validate)
+            return f"{rid} has a passage narrower than 1 m"
         if mask.sum() * cell * cell < room_design(node.room_type).min_area - 1e-6:
             return f"{rid} is below its minimum area"
         defects = mask_defects(mask, node.room_type, building_type, cell)
@@ -672,7 +740,7 @@ def _attempt(
         # reaches the facade at a slab's end)
         banned = np.zeros((len(_DIRS), *free.shape), dtype=bool)
         for _ in range(_REFACINGS + 1):
-            runs = _runs(free & ~corridor, rays, depth, banned)
+            runs = _runs(free & ~corridor, rays, depth, banned, raster >= 0)
             short = [run for run in runs if not any(0 < it.width(run.depth) <= len(run) for it in items)]
             if not short:
                 break
@@ -716,7 +784,9 @@ def _attempt(
     if failed:
         return f"no ensuite fits the bay of {failed}"
     keep = {index[it.id] for it in placed}
-    _absorb(labels, hub, keep, building_type, [n.room_type for n in graph.nodes], cell)
+    types = [n.room_type for n in graph.nodes]
+    _absorb(labels, hub, keep, building_type, types, cell)
+    _hand_off(labels, _strips(labels == hub), hub, keep, building_type, types, cell)
     # runs no room took stay the corridor's (checked below like every room)
     names = {it.id for it in placed}
     dropped = [it.id for it in items if it.id not in names]

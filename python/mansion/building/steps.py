@@ -895,14 +895,14 @@ def _banked_floor(
 ) -> Floor | None:
     """Floor ``index`` laid out as a double-loaded corridor (:func:`bank_layout`) when its
     template asks for it and the floor's shape gives a sound layout, else None. The guest rooms
-    no bay is left for are left out (a floor keeps one of each type and the rooms the
+    and the template's optional rooms no bay is left for are left out (never the rooms the
     description asked for), each with a relaxation note, as are the wing corridors the banks'
     corridor replaces."""
     try:
-        wanted = floor_template(program.building_type, index, program.floor_count).banks
+        template = floor_template(program.building_type, index, program.floor_count)
     except InvalidInputError:
         return None
-    flat = bank_graph(graph) if wanted else None
+    flat = bank_graph(graph) if template.banks else None
     if flat is None:
         return None
     asked = {i for r in program.requests if r.honoured for i in r.room_ids}
@@ -910,10 +910,11 @@ def _banked_floor(
     for n in flat.nodes:
         count[n.room_type] = count.get(n.room_type, 0) + 1
     hub = flat.hub.id
+    optional = {rule.room_type for rule in template.rooms if rule.optional}
     spare = {
         n.id for n in flat.nodes
-        if n.id != hub and not n.is_core and count[n.room_type] > 1 and n.id not in asked
-        and not room_design(n.room_type).circulation and n.type != "area"
+        if n.id != hub and not n.is_core and (count[n.room_type] > 1 or n.room_type in optional)
+        and n.id not in asked and not room_design(n.room_type).circulation and n.type != "area"
     }
     found = bank_layout(
         flat, fp, program.building_type, cell=solver.get("cell_size", 0.5),
