@@ -81,8 +81,8 @@ def test_a_slab_is_laid_out_as_a_double_loaded_corridor() -> None:
     fp = _slab()
     found = bank_layout(graph, fp, "hotel", spare={f"guest_room_{k}" for k in range(1, 9)})
     assert found is not None
-    layout, kept, dropped = found
-    assert dropped == [] and kept == graph
+    layout, kept, dropped, added = found
+    assert dropped == [] and added == [] and kept == graph
     assert not steps.narrow_rooms(layout.rooms, "hotel")
     assert not steps.unfit_rooms(layout.rooms, kept)
     assert sum(steps.misshapen(layout.rooms)) == 0
@@ -127,12 +127,29 @@ def test_guest_rooms_without_a_bay_are_left_out_only_when_they_may_be() -> None:
     assert why and all(w.startswith("at ") and "m: " in w for w in why)
     assert any("do not fit" in w for w in why)
     spare = {f"guest_room_{k}" for k in range(1, 21)}
-    layout, kept, dropped = bank_layout(graph, fp, "hotel", spare=spare)
+    layout, kept, dropped, added = bank_layout(graph, fp, "hotel", spare=spare)
+    assert added == []
     assert dropped and set(dropped) <= spare
     ids = {r.id for r in layout.rooms}
     for rid in dropped:
         assert rid not in ids and f"{rid}_ensuite" not in ids
     assert {n.id for n in kept.nodes} == ids
+    _guest_rooms_sound(layout, kept, Polygon(fp.polygon))
+
+
+def test_the_width_the_bays_leave_takes_more_guest_rooms() -> None:
+    graph = _hotel_graph(4)
+    fp = _slab()
+    layout, kept, dropped, added = bank_layout(graph, fp, "hotel", fill="guest_room")
+    assert dropped == [] and len(added) >= 4
+    ids = [n.id for n in kept.nodes]
+    assert len(ids) == len(set(ids)) == len(layout.rooms)
+    for rid in added:
+        assert rid.startswith("guest_room_") and f"{rid}_ensuite" in ids
+        node = next(n for n in kept.nodes if n.id == rid)
+        assert node.room_type == "guest_room" and node.area == 24.0
+    assert not steps.narrow_rooms(layout.rooms, "hotel")
+    assert not steps.unfit_rooms(layout.rooms, kept)
     _guest_rooms_sound(layout, kept, Polygon(fp.polygon))
 
 
@@ -154,7 +171,9 @@ def test_a_hotel_guest_floor_of_the_realism_hundred_is_banks() -> None:
     assert floor.layout.diagnostics.rounds == []  # not the cut rounds
     assert any(note.startswith("wing_1 merged into corridor") for note in floor.relaxations)
     guest = [n for n in floor.graph.nodes if n.room_type == "guest_room"]
-    assert len(guest) == 9
+    assert len(guest) >= 9  # the program's nine, and those the width left took
+    added = [note for note in floor.relaxations if " added (with " in note]
+    assert len(guest) == 9 + len(added)
     assert not steps.narrow_rooms(floor.layout.rooms, kind)
     assert not steps.unfit_rooms(floor.layout.rooms, floor.graph)
     _guest_rooms_sound(floor.layout, floor.graph, Polygon(floor.footprint.polygon))

@@ -45,6 +45,7 @@ Only floors whose rooms hang off the hub (wing corridors are folded into it,
 
 from __future__ import annotations
 
+import dataclasses
 import heapq
 import math
 from dataclasses import dataclass, field
@@ -325,7 +326,11 @@ class _Item:
 @dataclass
 class _Plan:
     labels: np.ndarray
+    #: the rooms its labels number, in order (the graph's, then the rooms added)
+    ids: list[str]
     dropped: list[str] = field(default_factory=list)
+    #: (room, its ensuite or None, the room it repeats, that room's ensuite or None)
+    added: list[tuple[str, str | None, str, str | None]] = field(default_factory=list)
 
 
 def _runs(
@@ -577,7 +582,10 @@ def _draw(
     shapes, at either end of the bay (the end alternating along the run, so bathrooms pair),
     that leaves the room sound and at a door's width on the corridor. Returns the first room
     whose bay holds no such ensuite, if any."""
-    for n, it in enumerate(sorted(placed, key=lambda x: (x.run, x.columns))):
+    # the n-th room with an ensuite along its run puts it at the bay's far end when n is even,
+    # its near end when odd: the two bathrooms of each pair of bays share a wall
+    along: dict[int, int] = {}
+    for it in sorted(placed, key=lambda x: (x.run, x.columns)):
         run = runs[it.run]
         a, b = it.columns
         bay = np.zeros(labels.shape, dtype=bool)
@@ -587,6 +595,7 @@ def _draw(
         labels[bay] = index[it.id]
         if it.ensuite is None:
             continue
+        n = along[it.run] = along.get(it.run, -1) + 1
         done = False
         for wide, deep in _ensuite_shapes(it):
             if wide >= b - a or deep >= run.depth:
@@ -721,7 +730,7 @@ def _fault(
 
 def _attempt(
     graph: RoomGraph, raster: np.ndarray, rays: dict[str, np.ndarray], depth: int, corridor_cells: int,
-    building_type: str | None, cell: float, spare: set[str], core_index: dict[str, int],
+    building_type: str | None, cell: float, spare: set[str], core_index: dict[str, int], fill: str | None,
 ) -> _Plan | str:
     """The floor at one bay depth (cells), or why there is none."""
     ids = [n.id for n in graph.nodes]
@@ -773,6 +782,12 @@ def _attempt(
     placed = _pack(items, kept_runs)
     if placed is None:
         return "the rooms that must stay do not fit"
+    added = _filled(placed, items, kept_runs, fill, {n.id for n in graph.nodes})
+    for room, bath, _, _ in added:
+        for rid in (room, bath):
+            if rid is not None:
+                index[rid] = len(ids)
+                ids.append(rid)
     _bays(placed, kept_runs)
     labels = np.full(raster.shape, -1, dtype=np.int32)
     labels[free] = hub
@@ -780,17 +795,51 @@ def _attempt(
         if cid in index:
             labels[raster == k] = index[cid]
     room_types = {n.id: n.room_type for n in graph.nodes}
+    for room, bath, model, model_bath in added:
+        room_types[room] = room_types[model]
+        if bath is not None and model_bath is not None:
+            room_types[bath] = room_types[model_bath]
     failed = _draw(placed, kept_runs, labels, index, building_type, room_types, cell, corridor)
     if failed:
         return f"no ensuite fits the bay of {failed}"
     keep = {index[it.id] for it in placed}
-    types = [n.room_type for n in graph.nodes]
+    types = [room_types[rid] for rid in ids]
     _absorb(labels, hub, keep, building_type, types, cell)
     _hand_off(labels, _strips(labels == hub), hub, keep, building_type, types, cell)
     # runs no room took stay the corridor's (checked below like every room)
     names = {it.id for it in placed}
     dropped = [it.id for it in items if it.id not in names]
-    return _Plan(labels, dropped)
+    return _Plan(labels, ids, dropped, added)
+
+
+def _filled(
+    placed: list[_Item], items: list[_Item], runs: list[_Run], fill: str | None, taken: set[str],
+) -> list[tuple[str, str | None, str, str | None]]:
+    """More rooms of the floor's ``fill`` type (its guest rooms) in the width the facade runs
+    have left once every room is placed, as the program repeats them until the floor's area is
+    used; each a copy of the first such room, with its ensuite. Adds them to ``placed`` and
+    returns (room, ensuite, the room copied, its ensuite)."""
+    model = next((it for it in items if it.room_type == fill), None) if fill else None
+    if model is None:
+        return []
+    used = [0] * len(runs)
+    for it in placed:
+        used[it.run] += it.width(runs[it.run].depth)
+    prefix = model.id.rstrip("0123456789")
+    n = 1
+    out: list[tuple[str, str | None, str, str | None]] = []
+    for j, run in enumerate(runs):
+        wide = model.width(run.depth) if run.lit else 0
+        while wide and len(run) - used[j] >= wide:
+            while f"{prefix}{n}" in taken:
+                n += 1
+            room = f"{prefix}{n}"
+            bath = f"{room}_ensuite" if model.ensuite is not None else None
+            taken.update(r for r in (room, bath) if r is not None)
+            placed.append(dataclasses.replace(model, id=room, ensuite=bath, run=j, _widths=dict(model._widths)))
+            out.append((room, bath, model.id, model.ensuite))
+            used[j] += wide
+    return out
 
 
 def bank_layout(
@@ -801,12 +850,15 @@ def bank_layout(
     cell: float = 0.5,
     min_contact: float = 1.0,
     spare: set[str] | frozenset[str] = frozenset(),
+    fill: str | None = None,
     why: list[str] | None = None,
-) -> tuple[FloorLayout, RoomGraph, list[str]] | None:
+) -> tuple[FloorLayout, RoomGraph, list[str], list[str]] | None:
     """The floor of ``graph`` (already :func:`bank_graph`'s) on ``footprint`` as a double-loaded
     corridor, or None when no depth gives a sound layout. Returns the layout, the graph without
-    the rooms left out (each of them in ``spare``, with its ensuite) and those rooms' ids.
-    ``why``, when given, collects what failed at each depth tried."""
+    the rooms left out (each of them in ``spare``, with its ensuite) and with the rooms added,
+    the ids of those left out and of those added. ``fill``: the room type repeated in the width
+    the bays leave (a hotel's guest rooms; None: none added). ``why``, when given, collects what
+    failed at each depth tried."""
     raster, origin = _core.rasterise(footprint.model_dump_json(), cell)
     raster = np.asarray(raster, dtype=np.int32)
     inside = raster != -1
@@ -822,38 +874,45 @@ def bank_layout(
     hi = min(int(MAX_DEPTH / cell + 1e-6), deepest - math.ceil(corridor_cells / 2))
     lo = int(MIN_DEPTH / cell + 1e-6)
     for depth in range(hi, lo - 1, -1):
-        plan = _attempt(graph, raster, rays, depth, corridor_cells, building_type, cell, set(spare), core_index)
+        plan = _attempt(
+            graph, raster, rays, depth, corridor_cells, building_type, cell, set(spare), core_index, fill,
+        )
         if isinstance(plan, str):
             if why is not None:
                 why.append(f"at {depth * cell:g} m: {plan}")
             continue
-        g = graph
-        if plan.dropped:
-            gone = set(plan.dropped)
-            for e in graph.edges:
-                if e.source in gone:
-                    gone.add(e.target)
-            g = RoomGraph(
-                nodes=[n for n in graph.nodes if n.id not in gone],
-                edges=[e for e in graph.edges if e.source not in gone and e.target not in gone],
-            )
-            ids = [n.id for n in g.nodes]
-            old = [n.id for n in graph.nodes]
-            remap = np.full(len(old) + 1, -1, dtype=np.int32)
-            for k, rid in enumerate(old):
-                remap[k] = ids.index(rid) if rid in ids else -1
-            labels = np.where(plan.labels >= 0, remap[plan.labels], plan.labels)
-            # cells of rooms left out would be none: they were never drawn
-        else:
-            labels = plan.labels
+        g = _planned_graph(graph, plan)
         ids = [n.id for n in g.nodes]
+        where = {rid: k for k, rid in enumerate(ids)}
+        remap = np.array([where.get(rid, -1) for rid in plan.ids] + [-1], dtype=np.int32)
+        labels = np.where(plan.labels >= 0, remap[plan.labels], plan.labels)
         fault = _fault(labels, g, ids, building_type, cell, min_contact)
         if fault is not None:
             if why is not None:
                 why.append(f"at {depth * cell:g} m: {fault}")
             continue
-        return _layout(labels, g, ids, origin, cell), g, plan.dropped
+        return _layout(labels, g, ids, origin, cell), g, plan.dropped, [a[0] for a in plan.added]
     return None
+
+
+def _planned_graph(graph: RoomGraph, plan: _Plan) -> RoomGraph:
+    """``graph`` without the rooms ``plan`` left out (with their ensuites) and with the rooms it
+    added, each a copy of the room it repeats (and of its ensuite), off the hub."""
+    gone = set(plan.dropped)
+    for e in graph.edges:
+        if e.source in gone:
+            gone.add(e.target)
+    nodes = [n for n in graph.nodes if n.id not in gone]
+    edges = [e for e in graph.edges if e.source not in gone and e.target not in gone]
+    by_id = {n.id: n for n in graph.nodes}
+    hub = graph.hub.id
+    for room, bath, model, model_bath in plan.added:
+        nodes.append(by_id[model].model_copy(update={"id": room}))
+        edges.append(RoomEdge(source=hub, target=room, kind="access"))
+        if bath is not None and model_bath is not None:
+            nodes.append(by_id[model_bath].model_copy(update={"id": bath}))
+            edges.append(RoomEdge(source=room, target=bath, kind="access"))
+    return RoomGraph(nodes=nodes, edges=edges)
 
 
 def _layout(labels: np.ndarray, graph: RoomGraph, ids: list[str], origin: tuple[float, float], cell: float) -> FloorLayout:

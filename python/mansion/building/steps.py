@@ -896,7 +896,8 @@ def _banked_floor(
     """Floor ``index`` laid out as a double-loaded corridor (:func:`bank_layout`) when its
     template asks for it and the floor's shape gives a sound layout, else None. The guest rooms
     and the template's optional rooms no bay is left for are left out (never the rooms the
-    description asked for), each with a relaxation note, as are the wing corridors the banks'
+    description asked for), and the width the bays leave takes more of the template's fill
+    rooms (guest rooms), each with a relaxation note, as are the wing corridors the banks'
     corridor replaces."""
     try:
         template = floor_template(program.building_type, index, program.floor_count)
@@ -916,13 +917,14 @@ def _banked_floor(
         if n.id != hub and not n.is_core and (count[n.room_type] > 1 or n.room_type in optional)
         and n.id not in asked and not room_design(n.room_type).circulation and n.type != "area"
     }
+    fill = next((rule.room_type for rule in template.rooms if rule.fill), None)
     found = bank_layout(
         flat, fp, program.building_type, cell=solver.get("cell_size", 0.5),
-        min_contact=solver.get("min_contact", 1.0), spare=spare,
+        min_contact=solver.get("min_contact", 1.0), spare=spare, fill=fill,
     )
     if found is None:
         return None
-    layout, kept, dropped = found
+    layout, kept, dropped, added = found
     floor_program = program.floor_program(index)
     notes = {r.id: r.notes for r in floor_program.rooms}
     folded = sorted({n.id for n in graph.nodes} - {n.id for n in flat.nodes})
@@ -932,6 +934,10 @@ def _banked_floor(
     for rid in dropped:
         also = f" (with {ensuites[rid]})" if rid in ensuites else ""
         relax.append(f"{rid} left out{also}: no bay along the corridor was left for it")
+    baths = {e.source: e.target for e in kept.edges if e.source != hub}
+    for rid in added:
+        also = f" (with {baths[rid]})" if rid in baths else ""
+        relax.append(f"{rid} added{also}: a bay along the corridor was left for one more")
     return Floor(
         index=index, graph=kept, footprint=fp, layout=layout, room_cards=_room_cards(kept, notes),
         rng_seed=derived_seed(seed, "banks", index), attempts=1, relaxations=relax,
