@@ -108,15 +108,35 @@ def test_wing_corridors_fold_into_the_hub() -> None:
     assert {e.source for e in flat.edges if e.target.startswith("guest_room_") and "ensuite" not in e.target} == {"corridor"}
 
 
-def test_a_floor_with_another_kind_of_sub_hub_is_left_to_the_cut_rounds() -> None:
-    graph = _hotel_graph(2)
-    graph = RoomGraph(
+def _with_toilets(graph: RoomGraph, child: str = "toilet") -> RoomGraph:
+    return RoomGraph(
         nodes=[*graph.nodes, RoomNode(id="toilets", type="area", area=4.0, room_type="toilet_lobby"),
-               RoomNode(id="toilet", type="Entities", area=3.0, room_type="toilet")],
+               RoomNode(id="toilet_1", type="Entities", area=4.0, room_type="toilet"),
+               RoomNode(id="toilet_2", type="Entities", area=4.0, room_type=child)],
         edges=[*graph.edges, RoomEdge(source="corridor", target="toilets", kind="access"),
-               RoomEdge(source="toilets", target="toilet", kind="access")],
+               RoomEdge(source="toilets", target="toilet_1", kind="access"),
+               RoomEdge(source="toilets", target="toilet_2", kind="access")],
     )
-    assert bank_graph(graph) is None
+
+
+def test_a_toilet_lobby_and_its_toilets_are_drawn_together_in_one_bay() -> None:
+    graph = _with_toilets(_hotel_graph(6))
+    assert bank_graph(graph) == graph
+    fp = _slab()
+    layout, kept, dropped, added = bank_layout(graph, fp, "hotel", fill="guest_room")
+    assert dropped == [] and added  # six guest rooms leave the slab half empty
+    lobby = layout.adjacency("corridor", "toilets")
+    assert lobby is not None and lobby.longest >= 1.0
+    for toilet in ("toilet_1", "toilet_2"):
+        door = layout.adjacency("toilets", toilet)
+        assert door is not None and door.longest >= 1.0
+    assert not steps.narrow_rooms(layout.rooms, "hotel")
+    assert not steps.unfit_rooms(layout.rooms, kept)
+
+
+def test_a_floor_with_another_kind_of_sub_hub_is_left_to_the_cut_rounds() -> None:
+    # a sub-hub with a room that wants daylight is no cluster
+    assert bank_graph(_with_toilets(_hotel_graph(2), child="guest_room")) is None
 
 
 def test_guest_rooms_without_a_bay_are_left_out_only_when_they_may_be() -> None:
@@ -184,3 +204,24 @@ def test_banks_off_leaves_the_floor_to_the_cut_rounds(monkeypatch: pytest.Monkey
     kind, floors, description = bench_case(12)
     floor = generate_building(description, building_type=kind, floors=floors, seed=12).floors[1]
     assert floor.layout.diagnostics.rounds
+
+
+def test_a_school_floor_is_banks_of_classrooms_with_its_toilets_in_one_bay() -> None:
+    """School 7's top floor: its music room had come out of the cut rounds below its 4.8 m width.
+    Laid out as banks, the classrooms, art and music rooms sit on the facade off one corridor,
+    the toilet lobby with its toilets in a bay of their own, and no room is below its minimums."""
+    kind, floors, description = bench_case(7)
+    building = generate_building(description, building_type=kind, floors=floors, seed=7)
+    floor = building.floors[floors - 1]
+    assert floor.layout.diagnostics.rounds == []
+    layout, graph = floor.layout, floor.graph
+    assert not steps.narrow_rooms(layout.rooms, kind)
+    assert not steps.unfit_rooms(layout.rooms, graph)
+    outline = Polygon(floor.footprint.polygon)
+    for room in layout.rooms:
+        if room.room_type in ("classroom", "art_room", "music_room"):
+            assert layout.adjacency(graph.hub.id, room.id).longest >= 1.0
+            shape = Polygon(room.polygon, room.holes)
+            assert shape.boundary.intersection(outline.boundary).length >= 2.0, room.id
+    toilets = [e.target for e in graph.edges if e.source == "toilets"]
+    assert toilets and all(layout.adjacency("toilets", t).longest >= 1.0 for t in toilets)

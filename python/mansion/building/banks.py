@@ -1,9 +1,9 @@
 """Banks: a floor laid out whole as a double-loaded corridor, rooms in banks along its two sides.
 
-Hotels' guest-room floors are planned this way everywhere: a corridor down the middle of the
-slab, guest rooms in bays between it and the facade on both sides, each bay entered from the
-corridor past its bathroom, the cores and the service rooms (housekeeping, linen) where the bays
-stop. Grown by the cut rounds (:mod:`mansion.floorplan.solve`) such a floor came out as wings of
+Hotels' guest-room floors are planned this way everywhere, and schools' classroom floors: a
+corridor down the middle of the slab, guest rooms or classrooms in bays between it and the
+facade on both sides, a guest room entered from the corridor past its bathroom, the cores and
+the service rooms (housekeeping, linen, toilets) where the bays stop. Grown by the cut rounds (:mod:`mansion.floorplan.solve`) such a floor came out as wings of
 rooms round ragged corridors: guest rooms wrapped round their ensuites, rooms 90 m² beside rooms
 below their 3.3 m width, half a floor's rooms left out (issue 14).
 
@@ -40,7 +40,10 @@ The layout here is drawn on the solver's grid (0.5 m cells) in four steps, for e
    does, the caller lays the floor out by the cut rounds.
 
 Only floors whose rooms hang off the hub (wing corridors are folded into it,
-:func:`bank_graph`) and whose rooms' only children are their ensuites are laid out here.
+:func:`bank_graph`), whose rooms' only children are their ensuites and whose other sub-hubs are
+clusters (a toilet lobby with its toilets, drawn in one bay: the lobby's strip from the corridor
+to the facade, its rooms stacked beside it) are laid out here: a hotel's guest floors and a
+school's classroom floors (``FloorTemplate.banks``).
 """
 
 from __future__ import annotations
@@ -101,16 +104,15 @@ _TURN = 4
 def bank_graph(graph: RoomGraph) -> RoomGraph | None:
     """``graph`` with its wing corridors folded into the hub (their rooms hang off the hub, their
     area is the hub's), or None when the floor is not one for banks: a sub-hub that is not a
-    corridor, a room with children other than its ensuite, a room cut from a room that is not off
-    the hub."""
+    corridor nor a cluster (a toilet lobby with its toilets: rooms without children that need no
+    daylight), a room with children other than its ensuite, a room cut from a room that is not
+    off the hub."""
     hub = graph.hub.id
     nodes = {n.id: n for n in graph.nodes}
     wings = {
         n.id for n in graph.nodes
         if n.id != hub and n.type == "area" and design_key(n.room_type) in _WINGS
     }
-    if any(n.type == "area" and n.id not in wings for n in graph.nodes if n.id != hub):
-        return None
     parent: dict[str, str] = {}
     for e in graph.edges:
         if e.kind != "access" or nodes[e.target].is_core:
@@ -118,10 +120,21 @@ def bank_graph(graph: RoomGraph) -> RoomGraph | None:
         if e.target in parent:
             return None
         parent[e.target] = hub if e.source in wings else e.source
+    below: dict[str, list[str]] = {}
     for room, up in parent.items():
-        if room in wings:
+        below.setdefault(up, []).append(room)
+    clusters = {n.id for n in graph.nodes if n.id != hub and n.type == "area" and n.id not in wings}
+    for c in clusters:
+        # a cluster: a sub-hub off the hub whose rooms are leaves that need no daylight (a
+        # toilet lobby and its toilets), drawn together in one bay
+        if parent.get(c) != hub or not below.get(c) or any(
+            r in below or room_design(nodes[r].room_type).daylight for r in below[c]
+        ):
+            return None
+    for room, up in parent.items():
+        if room in wings or up == hub or up in clusters:
             continue
-        if up != hub and (parent.get(up) != hub or not room_design(nodes[up].room_type).own_bathroom):
+        if parent.get(up) != hub or not room_design(nodes[up].room_type).own_bathroom:
             return None
     if any(e.kind != "access" for e in graph.edges):
         return None
@@ -292,6 +305,9 @@ class _Item:
     ensuite_width: int = 0
     ensuite_cells: int = 0
     ensuite_least: int = 0  # its minimum area, cells
+    #: the rooms of a cluster drawn in its bay beside it: (id, room type, clear width, minimum
+    #: area, planned area), widths in cells, areas in cells
+    cluster: tuple[tuple[str, str, int, float, float], ...] = ()
     columns: tuple[int, int] = (0, 0)
     run: int = -1
     _widths: dict[int, int] = field(default_factory=dict)
@@ -306,6 +322,12 @@ class _Item:
     def _width(self, depth: int) -> int:
         if depth < self.need:
             return 0
+        if self.cluster:
+            side = next(
+                (w for w in range(max(r[2] for r in self.cluster), depth + 1) if _stack(self.cluster, w, depth)),
+                0,
+            )
+            return self.need + side if side else 0
         least = max(
             self.need, math.ceil(depth / _ASPECT - 1e-6),
             math.ceil((self.least + self.ensuite_cells * self.ensuite_width) / depth - 1e-6),
@@ -313,7 +335,10 @@ class _Item:
         return next((w for w in range(least, 3 * depth + 1) if self.fits(w, depth)), 0)
 
     def fits(self, wide: int, depth: int) -> bool:
-        """Whether a bay ``wide`` positions by ``depth`` cells holds it and its ensuite."""
+        """Whether a bay ``wide`` positions by ``depth`` cells holds it and its ensuite (a
+        cluster: its rooms)."""
+        if self.cluster:
+            return _stack(self.cluster, wide - self.need, depth) is not None
         return self.ensuite is None or any(
             _bay_fits(wide, depth, a, b, self.room_type, self.building_type) for a, b in _ensuite_shapes(self)
         )
@@ -366,23 +391,21 @@ def _runs(
             wall, t = (cols - ray if d == "left" else cols + ray), rows
         # by facade line, then position along it, then from the facade inwards
         order = np.lexsort((ray, t, wall))
-        rows, cols, wall, t = rows[order].tolist(), cols[order].tolist(), wall[order].tolist(), t[order].tolist()
-        columns: list[list[tuple[int, int]]] = []
-        keys: list[tuple[int, int]] = []
-        for r, c, wl, tt in zip(rows, cols, wall, t):
-            if not keys or keys[-1] != (wl, tt):
-                keys.append((wl, tt))
-                columns.append([])
-            columns[-1].append((r, c))
-        start = 0
-        for i in range(1, len(columns) + 1):
-            if (
-                i == len(columns) or keys[i][0] != keys[i - 1][0] or keys[i][1] != keys[i - 1][1] + 1
-                or len(columns[i]) != len(columns[start])
-            ):
-                run = columns[start:i]
-                runs.append(_Run(run, k, all(rays[d][col[0]] == 1 for col in run)))
-                start = i
+        rows, cols, wall, t = rows[order], cols[order], wall[order], t[order]
+        starts = np.flatnonzero(np.r_[True, (wall[1:] != wall[:-1]) | (t[1:] != t[:-1])])
+        ends = np.r_[starts[1:], rows.size]
+        cells = list(zip(rows.tolist(), cols.tolist()))
+        columns = [cells[i:j] for i, j in zip(starts.tolist(), ends.tolist())]
+        size = ends - starts
+        cw, ct = wall[starts], t[starts]
+        # a run breaks where the facade line changes, a position is skipped or the depth changes
+        breaks = np.flatnonzero(
+            np.r_[True, (cw[1:] != cw[:-1]) | (ct[1:] != ct[:-1] + 1) | (size[1:] != size[:-1])]
+        ).tolist() + [len(columns)]
+        facade = rays[d]
+        for i, j in zip(breaks[:-1], breaks[1:]):
+            run = columns[i:j]
+            runs.append(_Run(run, k, all(facade[col[0]] == 1 for col in run)))
     return runs
 
 
@@ -436,7 +459,7 @@ def _items(graph: RoomGraph, cell: float, building_type: str | None, spare: set[
     """The rooms off the hub with what their bays need."""
     hub = graph.hub.id
     nodes = {n.id: n for n in graph.nodes}
-    ensuite: dict[str, str] = {}
+    below: dict[str, list[str]] = {}
     off_hub: list[str] = []
     for e in graph.edges:
         if nodes[e.target].is_core:
@@ -444,7 +467,8 @@ def _items(graph: RoomGraph, cell: float, building_type: str | None, spare: set[
         if e.source == hub:
             off_hub.append(e.target)
         else:
-            ensuite[e.source] = e.target
+            below.setdefault(e.source, []).append(e.target)
+    ensuite = {up: rooms[0] for up, rooms in below.items() if nodes[up].type != "area"}
     items: list[_Item] = []
     sq = cell * cell
 
@@ -458,6 +482,12 @@ def _items(graph: RoomGraph, cell: float, building_type: str | None, spare: set[
             rid, cells(needed_width(n.room_type, building_type)), d.min_area / sq, n.area / sq,
             bool(d.daylight), rid in spare, n.room_type, building_type,
         )
+        if n.type == "area":
+            item.cluster = tuple(
+                (r, nodes[r].room_type, cells(needed_width(nodes[r].room_type, building_type)),
+                 room_design(nodes[r].room_type).min_area / sq, nodes[r].area / sq)
+                for r in below[rid]
+            )
         if rid in ensuite:
             e = nodes[ensuite[rid]]
             item.ensuite = e.id
@@ -540,6 +570,27 @@ def _bays(placed: list[_Item], runs: list[_Run]) -> None:
             t += wd
 
 
+def _stack(rooms: tuple[tuple[str, str, int, float, float], ...], side: int, depth: int) -> list[int] | None:
+    """Depths (cells) of a cluster's rooms stacked from the facade in a strip ``side`` positions
+    wide and ``depth`` deep: each at least its clear width and minimum area and within the
+    proportions no room is drawn beyond, the rest shared as their planned areas ask; None when
+    they do not fit."""
+    if side < max(r[2] for r in rooms):
+        return None
+    least = [max(need, math.ceil(area / side - 1e-6), math.ceil(side / _ASPECT - 1e-6)) for _, _, need, area, _ in rooms]
+    if sum(least) > depth:
+        return None
+    out = list(least)
+    spare = depth - sum(least)
+    total = sum(r[4] for r in rooms) or 1.0
+    for i, r in enumerate(rooms):
+        out[i] += int(spare * r[4] / total)
+    out[-1] += depth - sum(out)
+    if any(d > _ASPECT * side for d in out):
+        return None
+    return out
+
+
 @lru_cache(maxsize=4096)
 def _bay_fits(wide: int, deep: int, a: int, b: int, room_type: str, building_type: str | None) -> bool:
     """Whether a bay ``wide`` x ``deep`` cells with an ensuite ``a`` positions by ``b`` cells
@@ -593,6 +644,10 @@ def _draw(
             for r, c in run.columns[t]:
                 bay[r, c] = True
         labels[bay] = index[it.id]
+        if it.cluster:
+            if not _draw_cluster(it, run, labels, index, building_type, room_types, cell):
+                return it.id
+            continue
         if it.ensuite is None:
             continue
         n = along[it.run] = along.get(it.run, -1) + 1
@@ -622,12 +677,41 @@ def _draw(
     return None
 
 
+def _draw_cluster(
+    it: _Item, run: _Run, labels: np.ndarray, index: dict[str, int], building_type: str | None,
+    room_types: dict[str, str], cell: float,
+) -> bool:
+    """A cluster's rooms stacked from the facade to the corridor beside its sub-hub's strip, at
+    either end of the bay: False when neither leaves every room sound and passable."""
+    a, b = it.columns
+    side = b - a - it.need
+    depths = _stack(it.cluster, side, run.depth)
+    if depths is None:
+        return False
+    for lo, hi in ((a + it.need, b), (a, a + side)):
+        trial = labels.copy()
+        start = 0
+        for (rid, *_), d in zip(it.cluster, depths):
+            for t in range(lo, hi):
+                for r, c in run.columns[t][start: start + d]:
+                    trial[r, c] = index[rid]
+            start += d
+        masks = [(rid, trial == index[rid]) for rid, *_ in it.cluster] + [(it.id, trial == index[it.id])]
+        if all(
+            not mask_defects(m, room_types[rid], building_type, cell) and _core.mask_passable(m) == (0, 1)
+            for rid, m in masks
+        ):
+            labels[:] = trial
+            return True
+    return False
+
+
 def _absorb(labels: np.ndarray, hub: int, keep: set[int], building_type: str | None, room_types: list[str], cell: float) -> None:
     """Pieces of the hub cut off from its largest piece (a short run by a core) go to the room
     beside them that shares most wall with them and stays sound (not a core or an ensuite)."""
-    comps = _pieces(labels == hub)
-    if len(comps) < 2:
+    if _core.mask_pieces(labels == hub) < 2:
         return
+    comps = _pieces(labels == hub)
     comps.sort(key=lambda m: -int(m.sum()))
     _hand_off(labels, comps[1:], hub, keep, building_type, room_types, cell)
 
@@ -661,7 +745,8 @@ def _strips(mask: np.ndarray) -> list[np.ndarray]:
     covered[1:, :-1] |= block
     covered[:-1, 1:] |= block
     covered[1:, 1:] |= block
-    return _pieces(mask & ~covered)
+    loose = mask & ~covered
+    return _pieces(loose) if loose.any() else []
 
 
 def _pieces(mask: np.ndarray) -> list[np.ndarray]:
@@ -741,6 +826,9 @@ def _attempt(
     corridor = free & (dist > depth)
     if not corridor.any():
         return "no corridor"
+    if corridor.sum() > MAX_CORRIDOR_SHARE * free.sum():
+        # the corridor only grows from here (runs no room fits, stubs): no need to draw it
+        return f"corridor takes {corridor.sum() / free.sum():.0%} of the floor before the runs"
     items = _items(graph, cell, building_type, spare)
 
     def runs_of(corridor: np.ndarray) -> list[_Run]:

@@ -130,8 +130,8 @@ def generate_building(
             is laid out again whole under a seed of its own, keeping the layout with fewer such
             rooms (offline planner; see
             :func:`mansion.building.steps.solve_building_floor`). 0 (the default) for time; 1
-            cuts the offline hundred's rooms below their width from 29 to 22 for about 1.09
-            times the generation time (1.59 times the passes off's against 1.46).
+            cuts the offline hundred's rooms below their width from 28 to 21 for about 1.09
+            times the generation time (1.62 times the passes off's against 1.47-1.49).
         progress: called as ``progress(message, done, total)`` as floors are solved.
 
     Raises:

@@ -55,8 +55,8 @@ class FloorTemplate:
     #: (room type, room type) pairs that must share a wall (both present on the floor).
     adjacent: tuple[tuple[str, str], ...] = ()
     #: Laid out whole as a double-loaded corridor with its rooms in bays on both sides where the
-    #: floor's shape allows (:mod:`mansion.building.banks`; a hotel's guest-room floors), else
-    #: by the cut rounds.
+    #: floor's shape allows (:mod:`mansion.building.banks`; a hotel's guest-room floors, a
+    #: school's classroom floors), else by the cut rounds.
     banks: bool = False
 
 
@@ -245,6 +245,7 @@ SCHOOL = Typology(
             Rm("computer_lab", optional=True), Rm("storage", optional=True), *_TOILETS,
         ),
         (Zone("classrooms", "corridor", 18.0), _TOILET_ZONE),
+        banks=True,
     ),
     top=FloorTemplate(
         "corridor",
@@ -253,6 +254,7 @@ SCHOOL = Typology(
             Rm("music_room", optional=True), Rm("library", area=60, optional=True), *_TOILETS,
         ),
         (Zone("classrooms", "corridor", 18.0), _TOILET_ZONE),
+        banks=True,
     ),
     shapes=("rectangle", "l_shape", "u_shape", "t_shape", "courtyard"),
     stacks=("uniform",),
