@@ -1004,6 +1004,9 @@ def _planned_graph(graph: RoomGraph, plan: _Plan) -> RoomGraph:
 
 
 def _layout(labels: np.ndarray, graph: RoomGraph, ids: list[str], origin: tuple[float, float], cell: float) -> FloorLayout:
+    """The floor's layout drawn from its labels as the solver draws one (its rooms by
+    :func:`~mansion.building.merge.rooms_from_grid`, their walls by
+    :func:`~mansion.building.merge.grid_adjacencies`), with no cut rounds to report."""
     rows, cols = labels.shape
     grid = LabelGrid(origin=origin, cell_size=cell, cols=cols, rows=rows, ids=ids, labels=labels.tolist())
     placeholders = {
