@@ -58,6 +58,7 @@ import numpy as np
 
 from mansion import _core
 from mansion.building.merge import grid_adjacencies, mask_defects, rooms_from_grid
+from mansion.building.recut import _pieces, _thin_parts, edge_grown
 from mansion.models.graph import RoomEdge, RoomGraph
 from mansion.models.building import Footprint
 from mansion.models.layout import Diagnostics, FloorLayout, LabelGrid, LayoutRoom
@@ -192,16 +193,6 @@ def _run_lengths(mask: np.ndarray, axis: int) -> np.ndarray:
     return out if axis == 1 else out.T
 
 
-def _touches(mask: np.ndarray, other: np.ndarray) -> np.ndarray:
-    """Cells of ``mask`` with a 4-neighbour in ``other``."""
-    near = np.zeros_like(other)
-    near[1:, :] |= other[:-1, :]
-    near[:-1, :] |= other[1:, :]
-    near[:, 1:] |= other[:, :-1]
-    near[:, :-1] |= other[:, 1:]
-    return mask & near
-
-
 def _contact(a: np.ndarray, b: np.ndarray) -> int:
     """Cell edges shared by the cells of ``a`` and of ``b``."""
     return int(
@@ -231,9 +222,9 @@ def _stub(core: np.ndarray, corridor: np.ndarray, free: np.ndarray, width: int) 
     stubs, an L where none is straight). None when no such path exists."""
     h, w = free.shape
     fits = (_block_sums(free, width) == width * width).tolist()
-    start = (_block_sums(_touches(np.ones_like(core), core), width) >= width) & np.asarray(fits)
+    start = (_block_sums(edge_grown(core), width) >= width) & np.asarray(fits)
     goal = (
-        (_block_sums(_touches(np.ones_like(corridor), corridor), width) >= min(width, _CORE_CONTACT))
+        (_block_sums(edge_grown(corridor), width) >= min(width, _CORE_CONTACT))
         | (_block_sums(corridor, width) > 0)
     ).tolist()
     queue: list[tuple[int, int, int, int]] = []
@@ -711,7 +702,7 @@ def _absorb(labels: np.ndarray, hub: int, keep: set[int], building_type: str | N
     beside them that shares most wall with them and stays sound (not a core or an ensuite)."""
     if _core.mask_pieces(labels == hub) < 2:
         return
-    comps = _pieces(labels == hub)
+    comps = _masks(_pieces(labels == hub), labels.shape)
     comps.sort(key=lambda m: -int(m.sum()))
     _hand_off(labels, comps[1:], hub, keep, building_type, room_types, cell)
 
@@ -724,7 +715,7 @@ def _hand_off(
     with it and stays sound and passable; a piece no room takes stays the hub's."""
     for comp in comps:
         best: tuple[int, int] | None = None
-        for k in set(np.unique(labels[_touches(np.ones_like(comp), comp) & ~comp]).tolist()):
+        for k in set(np.unique(labels[edge_grown(comp) & ~comp]).tolist()):
             if k < 0 or k == hub or k not in keep:
                 continue
             touch = _contact(comp, labels == k)
@@ -736,38 +727,15 @@ def _hand_off(
             labels[comp] = best[1]
 
 
-def _strips(mask: np.ndarray) -> list[np.ndarray]:
-    """The pieces of ``mask``'s cells that no 2 x 2 block of it covers: strips 0.5 m wide (a
-    core's side left to the corridor), which no agent walks."""
-    block = mask[:-1, :-1] & mask[1:, :-1] & mask[:-1, 1:] & mask[1:, 1:]
-    covered = np.zeros_like(mask)
-    covered[:-1, :-1] |= block
-    covered[1:, :-1] |= block
-    covered[:-1, 1:] |= block
-    covered[1:, 1:] |= block
-    loose = mask & ~covered
-    return _pieces(loose) if loose.any() else []
-
-
-def _pieces(mask: np.ndarray) -> list[np.ndarray]:
-    """The 4-connected pieces of ``mask``, each a mask of its own."""
+def _masks(parts: list[list[tuple[int, int]]], shape: tuple[int, ...]) -> list[np.ndarray]:
+    """Each of ``parts`` (its (row, column) cells, as :func:`~mansion.building.recut._pieces`
+    gives them) as a mask of a grid of ``shape``."""
     out: list[np.ndarray] = []
-    seen = np.zeros_like(mask)
-    h, w = mask.shape
-    for r0, c0 in zip(*np.nonzero(mask)):
-        if seen[r0, c0]:
-            continue
-        comp = np.zeros_like(mask)
-        stack = [(int(r0), int(c0))]
-        seen[r0, c0] = True
-        while stack:
-            r, c = stack.pop()
-            comp[r, c] = True
-            for rr, cc in ((r - 1, c), (r + 1, c), (r, c - 1), (r, c + 1)):
-                if 0 <= rr < h and 0 <= cc < w and mask[rr, cc] and not seen[rr, cc]:
-                    seen[rr, cc] = True
-                    stack.append((rr, cc))
-        out.append(comp)
+    for part in parts:
+        mask = np.zeros(shape, dtype=bool)
+        rows, cols = zip(*part)
+        mask[list(rows), list(cols)] = True
+        out.append(mask)
     return out
 
 
@@ -893,7 +861,8 @@ def _attempt(
     keep = {index[it.id] for it in placed}
     types = [room_types[rid] for rid in ids]
     _absorb(labels, hub, keep, building_type, types, cell)
-    _hand_off(labels, _strips(labels == hub), hub, keep, building_type, types, cell)
+    # strips 0.5 m wide (a core's side left to the corridor), which no agent walks
+    _hand_off(labels, _masks(_thin_parts(labels == hub), labels.shape), hub, keep, building_type, types, cell)
     # runs no room took stay the corridor's (checked below like every room)
     names = {it.id for it in placed}
     dropped = [it.id for it in items if it.id not in names]

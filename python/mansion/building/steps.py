@@ -782,7 +782,7 @@ def _solve_building_floor(
     )
     settings = solver.get("settings")
     repairs = settings is not None and settings.repair
-    asked = {i for r in program.requests if r.honoured for i in r.room_ids}
+    asked = _asked(program)
     premended: tuple[FloorLayout, RoomGraph, list[str]] | None = None
     fewest: tuple[FloorLayout, RoomGraph, list[str]] | None = None
     relaid = False
@@ -894,6 +894,11 @@ def _solve_building_floor(
 BANKS = True
 
 
+def _asked(program: BuildingProgram) -> set[str]:
+    """The rooms the description asked for and the program honoured: never left out."""
+    return {i for r in program.requests if r.honoured for i in r.room_ids}
+
+
 def _banked_floor(
     program: BuildingProgram, index: int, graph: RoomGraph, fp: Footprint, solver: dict[str, Any], seed: int,
 ) -> Floor | None:
@@ -910,7 +915,7 @@ def _banked_floor(
     flat = bank_graph(graph) if template.banks else None
     if flat is None:
         return None
-    asked = {i for r in program.requests if r.honoured for i in r.room_ids}
+    asked = _asked(program)
     count: dict[str, int] = {}
     for n in flat.nodes:
         count[n.room_type] = count.get(n.room_type, 0) + 1
@@ -934,11 +939,11 @@ def _banked_floor(
     folded = sorted({n.id for n in graph.nodes} - {n.id for n in flat.nodes})
     relax = [*floor_program.relaxations]
     relax += [f"{wing} merged into {hub}: one corridor serves both banks of rooms" for wing in folded]
-    ensuites = {e.source: e.target for e in flat.edges if e.source != hub}
+    # the rooms left out are in the graph before, those added in the graph after
+    baths = {e.source: e.target for e in (*flat.edges, *kept.edges) if e.source != hub}
     for rid in dropped:
-        also = f" (with {ensuites[rid]})" if rid in ensuites else ""
+        also = f" (with {baths[rid]})" if rid in baths else ""
         relax.append(f"{rid} left out{also}: no bay along the corridor was left for it")
-    baths = {e.source: e.target for e in kept.edges if e.source != hub}
     for rid in added:
         also = f" (with {baths[rid]})" if rid in baths else ""
         relax.append(f"{rid} added{also}: a bay along the corridor was left for one more")
