@@ -1,4 +1,5 @@
-"""The banks layout: a hotel's guest-room floor as a double-loaded corridor (issue 14)."""
+"""The banks layout: a hotel's guest-room floor as a double-loaded corridor, a hospital's ward
+floor as a racetrack (issue 14)."""
 
 from __future__ import annotations
 
@@ -225,3 +226,82 @@ def test_a_school_floor_is_banks_of_classrooms_with_its_toilets_in_one_bay() -> 
             assert shape.boundary.intersection(outline.boundary).length >= 2.0, room.id
     toilets = [e.target for e in graph.edges if e.source == "toilets"]
     assert toilets and all(layout.adjacency("toilets", t).longest >= 1.0 for t in toilets)
+
+
+def _ward_graph(wards: int) -> RoomGraph:
+    """A hospital ward floor: a corridor hub with two stairs, wards with their ensuites, and a
+    nurse station, a treatment room and a dirty utility, which need no daylight."""
+    nodes = [RoomNode(id="corridor", type="main", area=90.0, room_type="corridor")]
+    edges = []
+    for core in _stairs(24.0, 22.0):
+        nodes.append(RoomNode(id=core.id, type="stair", area=18.0, room_type="stair"))
+        edges.append(RoomEdge(source="corridor", target=core.id, kind="access"))
+    for rid, area in (("nurse_station", 12.0), ("treatment_room", 16.0), ("dirty_utility", 8.0)):
+        nodes.append(RoomNode(id=rid, type="Entities", area=area, room_type=rid))
+        edges.append(RoomEdge(source="corridor", target=rid, kind="access"))
+    for k in range(1, wards + 1):
+        room = f"ward_{k}"
+        nodes.append(RoomNode(id=room, type="Entities", area=21.0, room_type="ward"))
+        nodes.append(RoomNode(id=f"{room}_ensuite", type="Entities", area=4.5, room_type="ensuite"))
+        edges.append(RoomEdge(source="corridor", target=room, kind="access"))
+        edges.append(RoomEdge(source=room, target=f"{room}_ensuite", kind="access"))
+    return RoomGraph(nodes=nodes, edges=edges)
+
+
+def test_a_deep_plate_is_laid_out_as_a_racetrack() -> None:
+    """A 24 x 22 m plate is too deep for one corridor: no slab passes the checks (its corridor
+    falls in pieces round the stairs or leaves no ensuite its bay). As a racetrack its wards line
+    two opposite facades, a corridor runs along each bank and the rooms that need no daylight
+    fill the zone between, off the corridor; every room keeps its door."""
+    graph = _ward_graph(10)
+    fp = Footprint(polygon=[(0.0, 0.0), (24.0, 0.0), (24.0, 22.0), (0.0, 22.0)], cores=_stairs(24.0, 22.0))
+    spare = {n.id for n in graph.nodes if n.room_type == "ward"}
+    slab = bank_layout(graph, fp, "hospital", spare=spare, fill="ward")
+    found = bank_layout(graph, fp, "hospital", spare=spare, fill="ward", ring=True)
+    assert found is not None
+    layout, kept, dropped, added = found
+    outline = Polygon(fp.polygon)
+    hub = layout.room("corridor")
+    assert Polygon(hub.polygon, hub.holes).geom_type == "Polygon"
+    assert slab is None
+    for rid in ("nurse_station", "treatment_room", "dirty_utility"):
+        shape = Polygon(layout.room(rid).polygon)
+        # in the inner zone: off the facades, on the corridor
+        assert shape.boundary.intersection(outline.boundary).length == 0.0, rid
+        assert layout.adjacency("corridor", rid).longest >= 1.0, rid
+    wards = [n for n in kept.nodes if n.room_type == "ward"]
+    assert len(wards) >= 8
+    for node in wards:
+        room = layout.room(node.id)
+        shape = Polygon(room.polygon, room.holes)
+        assert shape.boundary.intersection(outline.boundary).length >= 2.0, node.id
+        assert layout.adjacency("corridor", node.id).longest >= 1.0, node.id
+        assert layout.adjacency(node.id, f"{node.id}_ensuite").longest >= 1.0, node.id
+    assert not steps.narrow_rooms(layout.rooms, "hospital")
+    assert not steps.unfit_rooms(layout.rooms, kept)
+
+
+def test_a_hospital_ward_floor_of_the_realism_hundred_is_a_racetrack() -> None:
+    """Hospital 20 of the realism hundred: its first ward floor, a 21 m square, had come out of
+    the cut rounds with a ward corridor below its 2.4 m width round the nurse station. As a
+    racetrack its wards line two facades, the nurse station, treatment room and utilities sit
+    between the two corridors, and no room is below its minimums."""
+    kind, floors, description = bench_case(20)
+    floor = generate_building(description, building_type=kind, floors=floors, seed=20).floors[1]
+    layout, graph = floor.layout, floor.graph
+    assert layout.diagnostics.rounds == []
+    assert any(note.startswith("ward_wing_1 merged into corridor") for note in floor.relaxations)
+    assert not steps.narrow_rooms(layout.rooms, kind)
+    assert not steps.unfit_rooms(layout.rooms, graph)
+    outline = Polygon(floor.footprint.polygon)
+    inner = [
+        r for r in layout.rooms
+        if r.room_type in ("nurse_station", "treatment_room", "dirty_utility", "clean_utility")
+    ]
+    assert inner
+    for room in inner:
+        assert Polygon(room.polygon).boundary.intersection(outline.boundary).length == 0.0, room.id
+    wards = [r for r in layout.rooms if r.room_type == "ward"]
+    assert len(wards) >= 6
+    for room in wards:
+        assert Polygon(room.polygon, room.holes).boundary.intersection(outline.boundary).length >= 2.0, room.id

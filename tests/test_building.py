@@ -391,7 +391,14 @@ def _assert_left_out_rooms_gone(b: Building, why: str) -> None:
 
 
 def _hospital(seed: int) -> Building:
-    return generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=seed)
+    """A three-storey hospital with every floor laid out by the cut rounds (their second layouts
+    and mends are what these tests exercise; the ward floors are otherwise racetracks,
+    :mod:`mansion.building.banks`)."""
+    from mansion.building import steps
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "BANKS", False)
+        return generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=seed)
 
 
 @functools.lru_cache(maxsize=None)
@@ -633,9 +640,10 @@ def test_a_floor_the_mends_bring_to_its_minimums_keeps_every_room() -> None:
 
 
 def test_a_floor_too_tight_for_its_wards_leaves_out_only_as_many_as_it_must() -> None:
-    """Hospital 104 of the second realism hundred lays its ward floors out with every ward below
-    its 14.5 m². Laid out again without all the wards it can spare, a floor keeps one ward and
-    its ward corridors take the floor; without only as many as its shortfall needs
+    """Hospital 104 of the second realism hundred, its ward floors laid out by the cut rounds
+    (banks off: they are racetracks by default), lays them out with every ward below its
+    14.5 m². Laid out again without all the wards it can spare, a floor keeps one ward and its
+    ward corridors take the floor; without only as many as its shortfall needs
     (``steps.DEFICIT_COVERS``), floor 3 keeps six of its nine wards and no room below its
     minimums."""
     from mansion.building import steps
@@ -644,7 +652,9 @@ def test_a_floor_too_tight_for_its_wards_leaves_out_only_as_many_as_it_must() ->
     kind, floors, description = bench_case(104)
 
     def ward_floor(index: int) -> tuple[set[str], int]:
-        floor = generate_building(description, building_type=kind, floors=floors, seed=104).floors[index]
+        with pytest.MonkeyPatch.context() as off:
+            off.setattr(steps, "BANKS", False)
+            floor = generate_building(description, building_type=kind, floors=floors, seed=104).floors[index]
         bad = set(steps.unfit_rooms(floor.layout.rooms, floor.graph)) | steps.narrow_rooms(floor.layout.rooms, kind)
         return bad, sum(r.room_type == "ward" for r in floor.layout.rooms)
 

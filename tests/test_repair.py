@@ -177,10 +177,11 @@ def test_repair_and_rebalance_bring_generated_rooms_closer_to_the_table() -> Non
     below the minimum areas at each step, fewer rooms below them with either pass than with
     none, and no more rooms elongated beyond the limit. (One building alone may go either way:
     a rebalanced round hands the next round a different region, which it cuts differently.)
-    No room is left out here (:func:`mansion.building.steps.leave_out`), none is mended after
-    the cut (:mod:`mansion.building.recut`, :mod:`mansion.building.merge`) and no round first
-    tries its rooms' full widths (``wide_retries``, which changes the layouts the passes start
-    from): the passes alone."""
+    Every floor is laid out by the cut rounds (no banks), no room is left out here
+    (:func:`mansion.building.steps.leave_out`), none is mended after the cut
+    (:mod:`mansion.building.recut`, :mod:`mansion.building.merge`) and no round first tries its
+    rooms' full widths (``wide_retries``, which changes the layouts the passes start from): the
+    passes alone."""
     from mansion.building import steps
 
     def rooms(**update: bool) -> list[tuple[str, Polygon]]:
@@ -192,6 +193,8 @@ def test_repair_and_rebalance_bring_generated_rooms_closer_to_the_table() -> Non
         mp = pytest.MonkeyPatch()
         mp.setattr(steps, "floor_settings", patched)
         mp.setattr(steps, "leave_out", lambda graph, unfit, keep=(): (graph, []))
+        # every floor by the cut rounds (the ward floors are otherwise racetracks, no round cut)
+        mp.setattr(steps, "BANKS", False)
         # nor are rooms mended after the cut (cut again, merged, their strips handed off)
         mp.setattr(steps, "recut_unfit_rooms", lambda layout, *_, **__: (layout, []))
         mp.setattr(steps, "merge_unfit_rooms", lambda layout, graph, *_, **__: (layout, graph, []))

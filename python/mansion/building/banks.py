@@ -39,11 +39,23 @@ The layout here is drawn on the solver's grid (0.5 m cells) in four steps, for e
    :data:`MAX_CORRIDOR_SHARE` of the free area. The first depth that passes is kept; when none
    does, the caller lays the floor out by the cut rounds.
 
+**Racetracks.** A plate too deep for one corridor (a hospital's ward floor on a 21 m square)
+leaves a slab's corridor a hall, or in pieces round its cores. Where its template allows
+(``FloorTemplate.racetrack``), each depth is also tried as a racetrack, the banks along two
+opposite facades only (those below and above, or left and right): a corridor runs along each
+bank, the cells farther than the bank and its corridor from both facades are an *inner zone*,
+and the corridors join at their ends along the other two facades (a window at each end). The
+inner zone's runs face one corridor across the zone's depth, with no window, so the rooms that
+need no daylight go there (a nurse station, a treatment room, the utilities, a toilet cluster)
+and the wards to the facades. Of the slabs and racetracks that pass the checks, the one keeping
+most rooms wins, then the one whose corridor takes least of the floor.
+
 Only floors whose rooms hang off the hub (wing corridors are folded into it,
 :func:`bank_graph`), whose rooms' only children are their ensuites and whose other sub-hubs are
 clusters (a toilet lobby with its toilets, drawn in one bay: the lobby's strip from the corridor
-to the facade, its rooms stacked beside it) are laid out here: a hotel's guest floors and a
-school's classroom floors (``FloorTemplate.banks``).
+to the facade, its rooms stacked beside it) are laid out here: a hotel's guest floors, a
+school's classroom floors and a hospital's ward floors (``FloorTemplate.banks``; the hospital's
+as racetracks too).
 """
 
 from __future__ import annotations
@@ -784,14 +796,38 @@ def _fault(
 def _attempt(
     graph: RoomGraph, raster: np.ndarray, rays: dict[str, np.ndarray], depth: int, corridor_cells: int,
     building_type: str | None, cell: float, spare: set[str], core_index: dict[str, int], fill: str | None,
+    ring: int = 0,
 ) -> _Plan | str:
-    """The floor at one bay depth (cells), or why there is none."""
+    """The floor at one bay depth (cells), or why there is none. ``ring`` 1 or 2: the banks
+    only along the facades below and above (1) or left and right (2), a corridor along each and
+    an inner zone between them of rooms that need no daylight, the corridors joined at their
+    ends along the other two facades (a racetrack)."""
     ids = [n.id for n in graph.nodes]
     index = {rid: k for k, rid in enumerate(ids)}
     hub = index[graph.hub.id]
     free = raster == -2
     dist = np.minimum.reduce([rays[d] for d in _DIRS])
-    corridor = free & (dist > depth)
+    inner = np.zeros_like(free)
+    # cells that may not face a facade: in a racetrack the banks face their two facades only
+    facing = np.zeros((len(_DIRS), *free.shape), dtype=bool)
+    if ring:
+        mine, other = ((0, 1), (2, 3)) if ring == 1 else ((2, 3), (0, 1))
+        reach = np.minimum(rays[_DIRS[mine[0]]], rays[_DIRS[mine[1]]])
+        ends = np.minimum(rays[_DIRS[other[0]]], rays[_DIRS[other[1]]])
+        inner = free & (reach > depth + corridor_cells) & (ends > corridor_cells)
+        if not inner.any():
+            return "no inner zone"
+        corridor = free & (reach > depth) & ~inner
+        for k in other:
+            facing[k] = free & (reach <= depth)
+        rays_in = {d: a[1:-1, 1:-1] for d, a in _rays(np.pad(inner, 1, constant_values=False)).items()}
+        span = int(max(int(rays_in[d][inner].max()) for d in _DIRS))
+        # the inner rooms span the zone, from one corridor to the other
+        for k in range(len(_DIRS)):
+            if k != mine[0]:
+                facing[k] |= inner
+    else:
+        corridor = free & (dist > depth)
     if not corridor.any():
         return "no corridor"
     if corridor.sum() > MAX_CORRIDOR_SHARE * free.sum():
@@ -805,7 +841,13 @@ def _attempt(
         # reaches the facade at a slab's end)
         banned = np.zeros((len(_DIRS), *free.shape), dtype=bool)
         for _ in range(_REFACINGS + 1):
-            runs = _runs(free & ~corridor, rays, depth, banned, raster >= 0)
+            runs = _runs(free & ~corridor & ~inner, rays, depth, banned | facing, raster >= 0)
+            if ring:
+                # the inner zone's rooms face a corridor, across the zone, with no window
+                runs += [
+                    dataclasses.replace(run, lit=False)
+                    for run in _runs(inner & ~corridor, rays_in, span, banned | facing, raster >= 0)
+                ]
             short = [run for run in runs if not any(0 < it.width(run.depth) <= len(run) for it in items)]
             if not short:
                 break
@@ -909,13 +951,16 @@ def bank_layout(
     spare: set[str] | frozenset[str] = frozenset(),
     fill: str | None = None,
     why: list[str] | None = None,
+    ring: bool = False,
 ) -> tuple[FloorLayout, RoomGraph, list[str], list[str]] | None:
     """The floor of ``graph`` (already :func:`bank_graph`'s) on ``footprint`` as a double-loaded
     corridor, or None when no depth gives a sound layout. Returns the layout, the graph without
     the rooms left out (each of them in ``spare``, with its ensuite) and with the rooms added,
     the ids of those left out and of those added. ``fill``: the room type repeated in the width
     the bays leave (a hotel's guest rooms; None: none added). ``why``, when given, collects what
-    failed at each depth tried."""
+    failed at each depth tried. ``ring``: each depth tried as a racetrack too, both ways round,
+    and of all that pass the one keeping most rooms, then with the least corridor, kept (else
+    the deepest slab that passes)."""
     raster, origin = _core.rasterise(footprint.model_dump_json(), cell)
     raster = np.asarray(raster, dtype=np.int32)
     inside = raster != -1
@@ -930,13 +975,18 @@ def bank_layout(
     deepest = int(dist[free].max())
     hi = min(int(MAX_DEPTH / cell + 1e-6), deepest - math.ceil(corridor_cells / 2))
     lo = int(MIN_DEPTH / cell + 1e-6)
-    for depth in range(hi, lo - 1, -1):
+    tries = [(depth, 0) for depth in range(hi, lo - 1, -1)]
+    if ring:
+        tries += [(depth, way) for depth in range(int(MAX_DEPTH / cell + 1e-6), lo - 1, -1) for way in (1, 2)]
+    best: tuple[tuple[int, int], tuple[FloorLayout, RoomGraph, list[str], list[str]]] | None = None
+    for depth, around in tries:
         plan = _attempt(
             graph, raster, rays, depth, corridor_cells, building_type, cell, set(spare), core_index, fill,
+            ring=around,
         )
         if isinstance(plan, str):
             if why is not None:
-                why.append(f"at {depth * cell:g} m: {plan}")
+                why.append(f"at {depth * cell:g} m{f' (ring {around})' if around else ''}: {plan}")
             continue
         g = _planned_graph(graph, plan)
         ids = [n.id for n in g.nodes]
@@ -946,10 +996,17 @@ def bank_layout(
         fault = _fault(labels, g, ids, building_type, cell, min_contact)
         if fault is not None:
             if why is not None:
-                why.append(f"at {depth * cell:g} m: {fault}")
+                why.append(f"at {depth * cell:g} m{f' (ring {around})' if around else ''}: {fault}")
             continue
-        return _layout(labels, g, ids, origin, cell), g, plan.dropped, [a[0] for a in plan.added]
-    return None
+        found = (_layout(labels, g, ids, origin, cell), g, plan.dropped, [a[0] for a in plan.added])
+        if not ring:
+            return found
+        # of the slabs and racetracks that pass, the one keeping most rooms, then the one whose
+        # corridor takes least of the floor (a slab on a deep plate leaves a hall, not a corridor)
+        key = (len(plan.dropped) - len(plan.added), int((labels == ids.index(graph.hub.id)).sum()))
+        if best is None or key < best[0]:
+            best = (key, found)
+    return None if best is None else best[1]
 
 
 def _planned_graph(graph: RoomGraph, plan: _Plan) -> RoomGraph:

@@ -58,6 +58,10 @@ class FloorTemplate:
     #: floor's shape allows (:mod:`mansion.building.banks`; a hotel's guest-room floors, a
     #: school's classroom floors), else by the cut rounds.
     banks: bool = False
+    #: With ``banks``: each bay depth tried as a racetrack too (banks along two opposite facades,
+    #: a corridor along each, the rooms without daylight between them; a hospital's ward floors
+    #: on deep plates), the layout keeping most rooms, then with the least corridor, kept.
+    racetrack: bool = False
 
 
 @dataclass(frozen=True)
@@ -209,6 +213,8 @@ HOSPITAL = Typology(
             Rm("staff_room", optional=True), *_TOILETS,
         ),
         (Zone("ward_wing", "ward_corridor", 20.0), _TOILET_ZONE),
+        banks=True,
+        racetrack=True,
     ),
     top=FloorTemplate(
         "corridor",
@@ -218,6 +224,8 @@ HOSPITAL = Typology(
             Rm("nurse_station", zone="ward_wing"), Rm("laboratory", optional=True), *_TOILETS,
         ),
         (Zone("ward_wing", "ward_corridor", 16.0), _TOILET_ZONE),
+        banks=True,
+        racetrack=True,
     ),
     shapes=("rectangle", "l_shape", "t_shape", "u_shape", "courtyard"),
     stacks=("uniform", "podium", "setback"),
