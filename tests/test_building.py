@@ -391,14 +391,14 @@ def _assert_left_out_rooms_gone(b: Building, why: str) -> None:
 
 
 def _hospital(seed: int) -> Building:
-    """A three-storey hospital with every floor laid out by the cut rounds (their second layouts
-    and mends are what these tests exercise; the ward floors are otherwise racetracks,
-    :mod:`mansion.building.banks`)."""
+    """A three-storey hospital with every floor laid out by the cut rounds and not laid out again
+    whole (their second layouts and mends are what these tests exercise; the ward floors are
+    otherwise racetracks, :mod:`mansion.building.banks`)."""
     from mansion.building import steps
 
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "BANKS", False)
-        return generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=seed)
+        return generate_building("a 3-storey hospital", building_type="hospital", floors=3, seed=seed, relayouts=0)
 
 
 @functools.lru_cache(maxsize=None)
@@ -816,7 +816,7 @@ def test_a_room_below_its_width_and_a_room_beside_it_are_cut_again_together() ->
     assert "pairs" in steps.NARROW_MENDS
 
     def ground() -> tuple[set[str], int, Figures]:
-        b = generate_building(description, building_type=kind, floors=floors, seed=166)
+        b = generate_building(description, building_type=kind, floors=floors, seed=166, relayouts=0)
         floor = b.floors[0]
         return steps.narrow_rooms(floor.layout.rooms, kind), len(floor.layout.rooms), summarise(building_rooms(b))
 

@@ -24,6 +24,7 @@ from mansion.dataset import (
     parse_floors,
     parse_mix,
 )
+from mansion.building.generate import RELAYOUTS
 from mansion.exceptions import InvalidInputError
 from mansion.models.building import Building
 from mansion.planning.description import parse_description
@@ -172,14 +173,18 @@ def test_settings_of_a_dataset_cannot_change_on_resume(two_workers: Path) -> Non
     other = DatasetSettings.parse(floors="2-2", seed=26, max_floor_area=300, validate=False)
     with pytest.raises(InvalidInputError, match="seed"):
         make_dataset(two_workers, N, other)
-    # relayouts decide the buildings too: a dataset made without them does not resume with them
-    relaid = dataclasses.replace(SMALL, relayouts=1)
+    # relayouts decide the buildings too: a dataset made with them (the default) does not
+    # resume without them
+    bare = dataclasses.replace(SMALL, relayouts=0)
     with pytest.raises(InvalidInputError, match="relayouts"):
-        make_dataset(two_workers, N, relaid)
+        make_dataset(two_workers, N, bare)
 
 
-def test_relayouts_reach_every_building_and_are_recorded_only_when_asked_for() -> None:
-    assert "relayouts" not in SMALL.to_dict()
+def test_relayouts_reach_every_building_and_are_recorded_unless_none() -> None:
+    # a dataset made without relayouts, as before the option, writes no key for them, so it
+    # resumes as it was with --relayouts 0
+    assert "relayouts" not in dataclasses.replace(SMALL, relayouts=0).to_dict()
+    assert SMALL.to_dict()["relayouts"] == RELAYOUTS == 1
     relaid = dataclasses.replace(SMALL, relayouts=2)
     assert relaid.to_dict()["relayouts"] == 2 and relaid.job().relayouts == 2
     with pytest.raises(InvalidInputError, match="relayouts"):

@@ -25,6 +25,7 @@ from typing import Any
 
 import mansion.building.steps as steps
 from mansion.building import generate_building
+from mansion.building.generate import RELAYOUTS
 from mansion.eval.realism import bench_case
 
 
@@ -55,7 +56,9 @@ def timed(seed: int, on: bool, relayouts: int) -> float:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--seeds", type=int, nargs=2, default=(0, 100), metavar=("FIRST", "END"))
-    ap.add_argument("--relayouts", type=int, default=0, help="the on side's relayouts (generate --relayouts)")
+    ap.add_argument(
+        "--relayouts", type=int, default=RELAYOUTS, help="the on side's relayouts (generate --relayouts; default: the default's)",
+    )
     ap.add_argument("--per-building", action="store_true", help="print each building's two times")
     args = ap.parse_args()
     total = {True: 0.0, False: 0.0}

@@ -55,6 +55,7 @@ __all__ = [
     "solver_options",
     "generated_weights",
     "PROGRAM_ATTEMPTS",
+    "RELAYOUTS",
 ]
 
 #: Programs tried before giving up: the seed's own, then programs relaxed step by step (optional
@@ -63,6 +64,13 @@ __all__ = [
 PROGRAM_ATTEMPTS = 4
 #: Relayouts a floor may be given at most (:func:`generate_building`'s ``relayouts``).
 MAX_RELAYOUTS = 5
+#: Relayouts a floor is given by default: a floor the mends leave with rooms below their minimum
+#: area or width is laid out again whole once (:func:`mansion.building.steps.solve_building_floor`).
+#: Measured on the offline hundreds (seeds 0-99 / 100-199): rooms below their width 22 / 14 -> 15
+#: / 7, below their area 4 / 2 -> 2 / 1, for 1.461 and 1.376 times the time of the passes off in
+#: two runs (none: 1.391 and 1.400; ``benches/python/bench_passes.py``); off until the racetracks
+#: took the hospitals' ward floors from the solver, when it cost 1.62 times.
+RELAYOUTS = 1
 
 
 def check_relayouts(relayouts: object) -> None:
@@ -96,7 +104,7 @@ def generate_building(
     min_contact: float = 1.0,
     weights: EnergyWeights | None = None,
     min_width: float | None = MIN_CLEAR_WIDTH,
-    relayouts: int = 0,
+    relayouts: int = RELAYOUTS,
     progress: Progress | None = None,
 ) -> Building:
     """Generate a checked multi-floor building (plans only) from a plain-language description.
@@ -129,9 +137,9 @@ def generate_building(
         relayouts: times a floor the mends leave with rooms below their minimum area or width
             is laid out again whole under a seed of its own, keeping the layout with fewer such
             rooms (offline planner; see
-            :func:`mansion.building.steps.solve_building_floor`). 0 (the default) for time; 1
-            cuts the offline hundred's rooms below their width from 28 to 21 for about 1.09
-            times the generation time (1.62 times the passes off's against 1.47-1.49).
+            :func:`mansion.building.steps.solve_building_floor`). :data:`RELAYOUTS` (1) by
+            default: it cuts the offline hundred's rooms below their width from 22 to 15 for
+            about 1.05 times the generation time; 0 for the fastest layout.
         progress: called as ``progress(message, done, total)`` as floors are solved.
 
     Raises:
@@ -199,7 +207,7 @@ def generate_building(
 
 def _solve_floors(
     plan: BuildingPlanner, program: BuildingProgram, seed: int, solver: dict[str, Any], progress: Progress | None,
-    description: str, *, drop_widths: bool = True, relayouts: int = 0,
+    description: str, *, drop_widths: bool = True, relayouts: int = RELAYOUTS,
 ) -> list[Floor]:
     """Every floor of ``program``, solved one after another (copies repeat their original);
     ``description``'s position words seed the rounds (:mod:`mansion.floorplan.text_seeds`);

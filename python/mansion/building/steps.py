@@ -655,9 +655,10 @@ def solve_building_floor(
     candidates (and of its fallback, no backtracks: :func:`_relayout_options`), from the rung of
     the ladder that laid the floor out; the layout with fewer such rooms is kept where it also
     leaves fewer rooms bad, elongated or slivers in all (:data:`RELAYOUT_SHAPES`; offline seeds;
-    a floor that carries walls too, before the floors above follow it). Off by default for time:
-    one relayout cuts the offline hundred's rooms below their width from 28 to 21 for 1.62 times
-    the generation time of the passes off, against 1.47-1.49 (the issue's bound is 1.5).
+    a floor that carries walls too, before the floors above follow it). Buildings are generated
+    with one (:data:`mansion.building.generate.RELAYOUTS`): it cuts the offline hundred's rooms
+    below their width from 22 to 15 for 1.38-1.46 times the generation time of the passes off
+    (the issue's bound is 1.5).
     """
     floor, again = _solve_building_floor(
         program, index, graph, below, seed, solver, seed_planner, description, drop_widths,

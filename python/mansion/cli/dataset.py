@@ -12,6 +12,7 @@ from rich.console import Console
 from rich.markup import escape
 
 from mansion.cli.main import _fail
+from mansion.building.generate import RELAYOUTS
 from mansion.exceptions import MansionError
 
 
@@ -32,7 +33,7 @@ def dataset(
     address: Annotated[Optional[str], typer.Option(help="Ray cluster address (e.g. auto or ray://host:10001); default: start Ray here.")] = None,
     pictures: Annotated[bool, typer.Option("--pictures/--no-pictures", help="Draw each building's floor plans (DIR/buildings/<id>/overview.png; `mansion render` draws the scenes).")] = False,
     validate: Annotated[bool, typer.Option("--validate/--no-validate", help="Validate every building's scenes as AI2-THOR's loader would; errors fail the building.")] = True,
-    relayouts: Annotated[int, typer.Option(min=0, max=5, help="Lay a floor left with rooms below their minimum area or width out again whole up to N times (see mansion generate --relayouts; slower).")] = 0,
+    relayouts: Annotated[int, typer.Option(min=0, max=5, help="Lay a floor left with rooms below their minimum area or width out again whole up to N times (see mansion generate --relayouts).")] = RELAYOUTS,
 ) -> None:
     """Generate a dataset of N buildings (building i: seed S+i, type drawn from the mix) into
     DIR/buildings/<id>/, with DIR/index.jsonl, failures.jsonl, summary.json and statistics.png.

@@ -12,6 +12,7 @@ from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
 
 from mansion.cli.main import _fail
+from mansion.building.generate import RELAYOUTS
 from mansion.exceptions import MansionError
 
 eval_app = typer.Typer(help="Measure the solver.", no_args_is_help=True)
@@ -227,7 +228,7 @@ def eval_realism(
     ] = 1.0,
     relayouts: Annotated[
         int, typer.Option(min=0, max=5, help="--generate: relayouts per floor (see mansion generate --relayouts).")
-    ] = 0,
+    ] = RELAYOUTS,
 ) -> None:
     """Room realism: slivers, elongated and unusable rooms, rooms below their type's minimum area
     or width, corridor widths and rooms without a corridor door, per building type and overall,

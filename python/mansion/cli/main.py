@@ -12,6 +12,7 @@ from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
+from mansion.building.generate import RELAYOUTS
 from mansion.exceptions import MansionError
 
 app = typer.Typer(
@@ -124,7 +125,7 @@ def generate(
     scenes: Annotated[bool, typer.Option("--scenes/--no-scenes", help="Write AI2-THOR scenes (DIR/scenes/).")] = True,
     render: Annotated[bool, typer.Option("--render/--no-render", help="Draw the scenes (DIR/scenes/floor_<k>.png).")] = True,
     objects: Annotated[bool, typer.Option("--objects/--no-objects", help="Furnish every room of the scenes (offline object plans, reachable placement).")] = True,
-    relayouts: Annotated[int, typer.Option(min=0, max=5, help="Lay a floor left with rooms below their minimum area or width out again whole up to N times, keeping the better (offline; slower).")] = 0,
+    relayouts: Annotated[int, typer.Option(min=0, max=5, help="Lay a floor left with rooms below their minimum area or width out again whole up to N times, keeping the better (offline; 0 is faster).")] = RELAYOUTS,
 ) -> None:
     """Generate a multi-floor building: DIR/building.json, DIR/floor_<k>.png, DIR/overview.png,
     and its AI2-THOR scenes, furnished: DIR/scenes/floor_<k>.json, DIR/scenes/manifest.json and

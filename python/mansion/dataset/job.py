@@ -27,6 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from mansion._collector import collector_paused
+from mansion.building.generate import RELAYOUTS
 from mansion.dataset.mix import BuildingSpec
 from mansion.dataset.pictures import draw_plans
 from mansion.dataset.store import RECORD, failure_path, write_json
@@ -46,7 +47,7 @@ class JobSettings:
     max_floor_area: float = 500.0
     pictures: bool = False
     validate: bool = True
-    relayouts: int = 0
+    relayouts: int = RELAYOUTS
 
 
 def warm_up() -> None:

@@ -20,6 +20,7 @@ from typing import Any
 
 from mansion.dataset.engines import ENGINES
 from mansion.dataset.job import JobSettings
+from mansion.building.generate import RELAYOUTS
 from mansion.dataset.mix import BuildingSpec, building_spec, parse_floors, parse_mix
 from mansion.dataset.statistics import plot_statistics
 from mansion.dataset.store import clean_stale, finished_ids, load_records, rebuild, write_json
@@ -43,13 +44,13 @@ class DatasetSettings:
     pictures: bool = False
     validate: bool = True
     #: :func:`mansion.generate_building`'s ``relayouts`` for every building.
-    relayouts: int = 0
+    relayouts: int = RELAYOUTS
 
     @classmethod
     def parse(
         cls, *, mix: str = DEFAULT_MIX, floors: str = "2-10",
         max_floor_area: float = DEFAULT_MAX_FLOOR_AREA, seed: int = 0, pictures: bool = False,
-        validate: bool = True, relayouts: int = 0,
+        validate: bool = True, relayouts: int = RELAYOUTS,
     ) -> DatasetSettings:
         if not 20 <= max_floor_area <= DEFAULT_MAX_FLOOR_AREA * 4:
             raise InvalidInputError(f"max floor area must be within 20-2000 m², got {max_floor_area:g}")
@@ -92,7 +93,10 @@ def _open(root: Path, settings: DatasetSettings, n: int) -> None:
             raise InvalidInputError(f"cannot read {str(path)!r}: {exc}") from exc
         old = {k: v for k, v in kept.items() if k != "n"}
         if old != wanted:
-            diff = ", ".join(f"{k}: {old.get(k)!r} there, {wanted[k]!r} now" for k in wanted if old.get(k) != wanted[k])
+            diff = ", ".join(
+                f"{k}: {old.get(k)!r} there, {wanted.get(k)!r} now"
+                for k in sorted(set(wanted) | set(old)) if old.get(k) != wanted.get(k)
+            )
             raise InvalidInputError(
                 f"{str(root)!r} holds a dataset made with other settings ({diff}); "
                 "rerun with the same settings or choose another --out"

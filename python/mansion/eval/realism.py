@@ -43,6 +43,7 @@ from shapely.geometry.base import BaseGeometry
 
 from mansion._io import atomic_write_text
 from mansion.exceptions import InvalidInputError
+from mansion.building.generate import RELAYOUTS
 from mansion.models.building import Building
 from mansion.models.room_design import ELONGATED_ASPECT, design_key, needed_width, room_design
 from mansion.models.room_shape import (
@@ -319,7 +320,7 @@ def _load_buildings(paths: Iterable[str | os.PathLike[str]]) -> Iterator[Buildin
         yield Building.load(path)
 
 
-def _generated(count: int, seed: int, failures: list[str], relayouts: int = 0) -> Iterator[Building]:
+def _generated(count: int, seed: int, failures: list[str], relayouts: int = RELAYOUTS) -> Iterator[Building]:
     from mansion.building import generate_building
     from mansion.exceptions import MansionError
 
@@ -340,7 +341,7 @@ def evaluate_realism(
     scale: float = T2D_METRES_PER_PIXEL,
     narrow: float = NARROW,
     progress: Callable[[int], None] | None = None,
-    relayouts: int = 0,
+    relayouts: int = RELAYOUTS,
 ) -> RealismReport:
     """Measure buildings (folders or building.json files, and/or ``generate`` offline buildings
     from benchmark seed ``seed`` on, with ``relayouts`` per floor) and, when given, the T2D plans
