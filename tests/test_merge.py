@@ -356,6 +356,45 @@ CCCCCCCCCCCCCCCCCCCCCCCCCCC
     assert [n.split(" (")[0] for n in notes] == ["kitchen_1 merged into flat_1"]
 
 
+def test_a_homes_only_dining_room_opens_into_its_kitchen_or_living_room() -> None:
+    # a townhouse's ground floor: the dining room D (the kitchen K's region) is 2 m wide where it
+    # needs 2.4 m, and its flat's only one; it opens into the kitchen cut from it (a kitchen-diner,
+    # 4 m wide) or the living room, never the other way round, and never into the WC
+    picture = """
+DDDDKKKKWW
+DDDDKKKKWW
+DDDDKKKKWW
+DDDDKKKKWW
+DDDDKKKKWW
+DDDDKKKKWW
+DDDDKKKKWW
+LLLLLLLLLL
+LLLLLLLLLL
+LLLLLLLLLL
+LLLLLLLLLL
+LLLLLLLLLL
+LLLLLLLLLL
+"""
+    names = {
+        "L": ("living_room", "main", "living_room", 13.0),
+        "D": ("dining", "area", "dining_room", 7.0),
+        "K": ("kitchen", "Entities", "kitchen", 5.5),
+        "W": ("wc", "Entities", "wc", 1.5),
+    }
+    edges = [("living_room", "dining"), ("dining", "kitchen"), ("living_room", "wc")]
+    layout, graph = layout_of(picture, names), graph_of(names, edges)
+    assert set(narrow(layout, graph)) == {"dining"}
+    merged, g, notes = merge_unfit_rooms(layout, graph, narrow, "townhouse", cure="narrow")
+    assert [n.split(" (")[0] for n in notes] == ["dining merged into kitchen"]
+    assert {n.id for n in g.nodes} == {"living_room", "kitchen", "wc"}
+    # the kitchen-diner is off the living room, as the dining room was, and at its width
+    assert any({e.source, e.target} == {"living_room", "kitchen"} for e in g.edges)
+    assert not narrow(merged, g)
+    # a description that asked for the dining room keeps it
+    _, _, kept = merge_unfit_rooms(layout, graph, narrow, "townhouse", keep={"dining"}, cure="narrow")
+    assert kept == []
+
+
 @pytest.mark.parametrize("seed", [0, 3])
 def test_grid_adjacencies_are_the_cores(seed: int) -> None:
     """The merge measures shared walls as the solver does, to the last contact."""

@@ -18,12 +18,15 @@ Two rooms merge only when
   area in the design table (a WC goes into an accessible toilet, a ward never into a nurse
   station), both are sanitary or neither is (a bathroom never becomes part of a bedroom), and
   unless both are circulation the one that goes is not the last of its type in the region it
-  was cut from (a flat keeps its bathroom where the floor has one per flat); a room that comes
-  with a bathroom of its own (a ward, a guest room) keeps it; a room the description asked for
-  never goes;
+  was cut from (a flat keeps its bathroom where the floor has one per flat), except a home's
+  dining room, which opens into its kitchen or living room, the merged room serving as both
+  (:data:`OPEN_PLAN`: a townhouse's dining room 2 m wide becomes a kitchen-diner); a room that
+  comes with a bathroom of its own (a ward, a guest room) keeps it; a room the description asked
+  for never goes;
 - they are close in the cut tree: siblings cut from one region, or a room and the region it was
   cut from, which then takes it (never a region into a room cut from it, a ward into its
-  ensuite), so a merge never joins two flats or two wings; on a floor whose walls carry the floor
+  ensuite, but for a dining room into the kitchen cut from it, its only room), so a merge never
+  joins two flats or two wings; on a floor whose walls carry the floor
   above (or stand on the floor below) both sit in one first-round region, so no carried wall
   moves;
 - they share a door's width of wall, and the merged room, judged as the room that stays, is no
@@ -261,7 +264,7 @@ def _may_go(
         return False
     if gone.id in keep:
         return False
-    if gone.room_type == stays.room_type:
+    if gone.room_type == stays.room_type or open_plan(gone, stays):
         return True
     if (design_key(gone.room_type) in SANITARY_TYPES) != (design_key(stays.room_type) in SANITARY_TYPES):
         return False
@@ -272,6 +275,17 @@ def _may_go(
         return False
     # circulation taken into circulation still serves: nothing of the program is lost
     return circulation or count.get((parent.get(gone.id), gone.room_type), 0) >= 2
+
+
+#: A home's rooms that may open into another, the merged room serving as both: a dining room
+#: into its kitchen (a kitchen-diner) or its living room (a living-dining room). Nothing of the
+#: program is lost, so the only dining room of a flat may merge so where no other room may.
+OPEN_PLAN: dict[str, frozenset[str]] = {"dining_room": frozenset({"kitchen", "living_room"})}
+
+
+def open_plan(gone: RoomNode, stays: RoomNode) -> bool:
+    """Whether ``gone`` may open into ``stays`` (:data:`OPEN_PLAN`)."""
+    return design_key(stays.room_type) in OPEN_PLAN.get(design_key(gone.room_type) or "", frozenset())
 
 
 #: Kinds of room a home cannot do without: a room of one of these is dropped only where the
@@ -425,8 +439,11 @@ def _best_merge(
             continue
         for gone, stays in ((room, other),) if drop else ((room, other), (other, room)):
             # siblings cut from one region, or a room into the region it was cut from (never a
-            # region into a room cut from it: a ward into its ensuite)
-            if parent.get(gone) not in (parent.get(stays), stays):
+            # region into a room cut from it: a ward into its ensuite; but a dining room into
+            # the kitchen cut from it, its only room, opens into it)
+            if parent.get(gone) not in (parent.get(stays), stays) and not (
+                open_plan(nodes[gone], nodes[stays]) and children.get(gone) == [stays]
+            ):
                 continue
             if drop:
                 if not _may_drop(nodes[gone], nodes[stays], graph, parent, keep):
