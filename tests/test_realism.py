@@ -381,3 +381,33 @@ def test_cli_realism_generates_and_rejects_nothing_to_measure(tmp_path: Path) ->
     assert r.exit_code != 0 and "nothing to measure" in r.output
     r = runner.invoke(app, ["eval", "realism", str(tmp_path / "missing")])
     assert r.exit_code != 0 and "no building.json" in r.output
+
+
+def test_rooms_below_their_minimums_are_named_and_the_reference_plans_only_counted() -> None:
+    # a kitchen 1 m wide (of its 1.8 m) and 3 m² (of its 5.5 m²), a bedroom at its minimums, and
+    # a reference plan's kitchen as narrow, which is counted but has no name
+    kitchen = box(0, 0, 1, 3)
+    records = [
+        RoomRecord("townhouse", "kitchen", kitchen, where="seed 30, floor 0, kitchen"),
+        RoomRecord("townhouse", "bedroom", box(0, 0, 3, 3), where="seed 30, floor 1, bedroom"),
+        RoomRecord("t2d", "kitchen", kitchen),
+    ]
+    f = summarise(records)
+    assert f.below_area == 2 and f.below_width == 2
+    assert f.undersized_rooms == [
+        "seed 30, floor 0, kitchen (kitchen): 3.0 m² of its 5.5 m², narrower than 1.8 m",
+    ]
+
+
+def test_cli_realism_names_the_rooms_below_their_minimums(tmp_path: Path) -> None:
+    """Every room the figures count as below its area or width is named in the JSON and on the
+    terminal by building seed, floor and room id (office 75's board room, 3.5 m wide of its
+    3.6 m, where the layout is left so)."""
+    r = runner.invoke(app, ["eval", "realism", "--generate", "1", "--seed", "75", "--json", str(tmp_path / "r.json")])
+    assert r.exit_code == 0, r.output
+    overall = json.loads((tmp_path / "r.json").read_text())["overall"]
+    named = overall["undersized_rooms"]
+    assert len(named) == sum(overall["undersized_types"].values())
+    assert "seed 75, floor 5, board_room (board_room): narrower than 3.6 m" in named
+    assert f"Rooms below their minimum area or width ({len(named)}):" in r.output
+    assert all(line.split(", ")[-1].split(" (")[0] in r.output for line in named)

@@ -17,6 +17,9 @@ from mansion.exceptions import MansionError
 
 eval_app = typer.Typer(help="Measure the solver.", no_args_is_help=True)
 
+#: Rooms below their minimums ``mansion eval realism`` names on the terminal (the JSON has all).
+UNDERSIZED_SHOWN = 20
+
 
 class ModeChoice(str, Enum):
     hierarchical = "hierarchical"
@@ -282,6 +285,13 @@ def eval_realism(
     narrow = ", ".join(f"{k} {v}" for k, v in list(report.overall.sliver_types.items())[:10])
     if narrow:
         console.print(f"Sliver rooms by type: {escape(narrow)}", soft_wrap=True)
+    small = report.overall.undersized_rooms
+    if small:
+        console.print(f"Rooms below their minimum area or width ({len(small)}):")
+        for line in small[:UNDERSIZED_SHOWN]:
+            console.print(f"  {escape(line)}", soft_wrap=True)
+        if len(small) > UNDERSIZED_SHOWN:
+            console.print(f"  … and {len(small) - UNDERSIZED_SHOWN} more (--json lists them all)")
     for failure in report.failures:
         console.print(f"  failed {escape(failure)}", soft_wrap=True)
     if json_out is not None:

@@ -136,6 +136,9 @@ class RoomRecord:
     polygon: BaseGeometry
     #: True / False: the room has / lacks access to circulation; None: not measured.
     corridor_access: bool | None = None
+    #: Where the room is, to name it ("seed 68, floor 0, commercial_kitchen"); None for the
+    #: reference plans' rooms, which are counted, not named.
+    where: str | None = None
 
     @property
     def design(self):  # noqa: ANN201 - RoomDesign; kept light for the dataclass
@@ -169,9 +172,10 @@ def building_rooms(building: Building) -> list[RoomRecord]:
             if room.is_core:
                 continue
             shape = Polygon(room.polygon, room.holes)
-            out.append(
-                RoomRecord(kind, room.room_type, shape, corridor_access=served.get(room.id, False))
-            )
+            out.append(RoomRecord(
+                kind, room.room_type, shape, corridor_access=served.get(room.id, False),
+                where=f"seed {building.seed}, floor {floor.index}, {room.id}",
+            ))
     return out
 
 
@@ -240,6 +244,10 @@ class Figures(BaseModel):
     sliver_types: dict[str, int] = Field(default_factory=dict)
     #: Rooms below their minimum area or width, by room type.
     undersized_types: dict[str, int] = Field(default_factory=dict)
+    #: Each room of a building below its minimum area or width, named with what it lacks
+    #: ("seed 68, floor 0, commercial_kitchen (commercial_kitchen): narrower than 3.6 m"), in
+    #: the order measured.
+    undersized_rooms: list[str] = Field(default_factory=list)
 
 
 def _pct(n: int, of: int) -> float:
@@ -273,6 +281,10 @@ def summarise(rooms: Iterable[RoomRecord], buildings: int = 0, narrow: float = N
         f.below_width += thin
         if small or thin:
             undersized[key] += 1
+            if r.where is not None:
+                lacks = [f"{shape.area:.1f} m² of its {d.min_area:g} m²"] if small else []
+                lacks += [f"narrower than {need:g} m"] if thin else []
+                f.undersized_rooms.append(f"{r.where} ({r.room_type}): {', '.join(lacks)}")
         if d.corridor and r.corridor_access is not None:
             f.corridor_door_of += 1
             f.no_corridor_door += not r.corridor_access
