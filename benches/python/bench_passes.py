@@ -1,7 +1,7 @@
 """What the realism passes cost (issue 14's bound: generation no more than 1.5× slower): the
 offline buildings of :func:`mansion.eval.realism.bench_case` generated with every pass on (the
 solver's repair and rebalance, then the floor's mends: recut, merges, widths, dissolve, and
-``--relayouts``; the banks layout of hotels' guest floors) and with every pass off (the same solver
+``--relayouts``; the banks layout of hotels', schools' and hospitals' floors) and with every pass off (the same solver
 settings without repair and rebalance, which also leaves the mends and the second layouts out, and
 every floor to the cut rounds), building by building in turn, the order
 alternating so neither side always runs on a warm cache.

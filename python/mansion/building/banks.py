@@ -170,7 +170,7 @@ def bank_graph(graph: RoomGraph) -> RoomGraph | None:
 
 def _rays(inside: np.ndarray) -> dict[str, np.ndarray]:
     """For each cell, how many cells (itself included) lie between it and the outside in each
-    direction: 1 for a cell on the facade."""
+    direction: 1 for a cell on the facade (the grid's edge counts as outside)."""
     h, w = inside.shape
     out = {d: np.zeros((h, w), dtype=np.int32) for d in _DIRS}
     ins = inside.astype(np.int32)
@@ -806,7 +806,6 @@ def _attempt(
     index = {rid: k for k, rid in enumerate(ids)}
     hub = index[graph.hub.id]
     free = raster == -2
-    dist = np.minimum.reduce([rays[d] for d in _DIRS])
     inner = np.zeros_like(free)
     # cells that may not face a facade: in a racetrack the banks face their two facades only
     facing = np.zeros((len(_DIRS), *free.shape), dtype=bool)
@@ -820,14 +819,14 @@ def _attempt(
         corridor = free & (reach > depth) & ~inner
         for k in other:
             facing[k] = free & (reach <= depth)
-        rays_in = {d: a[1:-1, 1:-1] for d, a in _rays(np.pad(inner, 1, constant_values=False)).items()}
+        rays_in = _rays(inner)
         span = int(max(int(rays_in[d][inner].max()) for d in _DIRS))
         # the inner rooms span the zone, from one corridor to the other
         for k in range(len(_DIRS)):
             if k != mine[0]:
                 facing[k] |= inner
     else:
-        corridor = free & (dist > depth)
+        corridor = free & (np.minimum.reduce([rays[d] for d in _DIRS]) > depth)
     if not corridor.any():
         return "no corridor"
     if corridor.sum() > MAX_CORRIDOR_SHARE * free.sum():
@@ -963,9 +962,7 @@ def bank_layout(
     the deepest slab that passes)."""
     raster, origin = _core.rasterise(footprint.model_dump_json(), cell)
     raster = np.asarray(raster, dtype=np.int32)
-    inside = raster != -1
-    padded = np.pad(inside, 1, constant_values=False)
-    rays = {d: a[1:-1, 1:-1] for d, a in _rays(padded).items()}
+    rays = _rays(raster != -1)
     core_index = {core.id: k for k, core in enumerate(footprint.cores)}
     corridor_cells = math.ceil(needed_width(graph.hub.room_type, building_type) / cell - 1e-6)
     free = raster == -2

@@ -886,7 +886,7 @@ def _solve_building_floor(
 
 
 #: Whether floors whose template asks for it (a hotel's guest-room floors, a school's classroom
-#: floors) are laid out whole as a double-loaded corridor (:mod:`mansion.building.banks`) where
+#: floors, a hospital's ward floors) are laid out whole as a double-loaded corridor (:mod:`mansion.building.banks`) where
 #: the floor's shape allows, before the cut rounds. Measured on the offline hundreds (seeds 0-99
 #: / 100-199): 22 of the hotels' 45 guest floors and 21 of the schools' 88 floors laid out so,
 #: rooms below their width 32 / 19 -> 28 / 18 (the hotels' 6 -> 2, the schools' 8 -> 7), guest

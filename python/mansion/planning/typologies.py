@@ -56,7 +56,7 @@ class FloorTemplate:
     adjacent: tuple[tuple[str, str], ...] = ()
     #: Laid out whole as a double-loaded corridor with its rooms in bays on both sides where the
     #: floor's shape allows (:mod:`mansion.building.banks`; a hotel's guest-room floors, a
-    #: school's classroom floors), else by the cut rounds.
+    #: school's classroom floors, a hospital's ward floors), else by the cut rounds.
     banks: bool = False
     #: With ``banks``: each bay depth tried as a racetrack too (banks along two opposite facades,
     #: a corridor along each, the rooms without daylight between them; a hospital's ward floors
