@@ -507,6 +507,7 @@ def test_a_floor_with_rooms_below_their_width_alone_is_laid_out_again_without_on
         mp.setattr(steps, "RESOLVE_NARROW", False)
         mp.setattr(steps, "MERGE_NARROW", False)
         mp.setattr(steps, "DISSOLVE", False)
+        mp.setattr(steps, "SPARE_STORES", False)
         kept = _hospital(seed).floors[floor.index]
     assert not any(_is_left_out(n) for n in kept.relaxations)
     assert set(gone) <= {n.id for n in kept.graph.nodes}
@@ -569,8 +570,8 @@ def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow(
     layouts were ranked by their defects, ten before the corridor typology chose each room's
     side and the open offices' bands took their full width) and none with it, with no more
     rooms below their area or slivers. Judged with the later mends of rooms below their width
-    that redraw whole families or split arms off (``steps.NARROW_MENDS``) turned off: they mend
-    those two open offices too."""
+    that redraw whole families or split arms off (``steps.NARROW_MENDS``, ``steps.LAST_PAIRS``)
+    turned off: they mend those two open offices too."""
     from mansion.building import steps
     from mansion.eval.realism import bench_case, building_rooms, summarise
 
@@ -578,6 +579,7 @@ def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow(
     assert steps.WIDE_RETRIES >= 1
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "NARROW_MENDS", ("stores", "merges"))
+        mp.setattr(steps, "LAST_PAIRS", False)
         wide = summarise(building_rooms(generate_building(description, building_type=kind, floors=floors, seed=117)))
         mp.setattr(steps, "WIDE_RETRIES", 0)
         capped = summarise(building_rooms(generate_building(description, building_type=kind, floors=floors, seed=117)))
@@ -822,6 +824,7 @@ def test_a_room_below_its_width_and_a_room_beside_it_are_cut_again_together() ->
 
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "NARROW_MENDS", tuple(m for m in steps.NARROW_MENDS if m != "pairs"))
+        mp.setattr(steps, "LAST_PAIRS", False)
         narrow, rooms, before = ground()
     assert narrow == {"lounge"}
     narrow_after, rooms_after, after = ground()
@@ -829,3 +832,48 @@ def test_a_room_below_its_width_and_a_room_beside_it_are_cut_again_together() ->
     assert after.below_width < before.below_width
     assert after.below_area <= before.below_area and after.sliver <= before.sliver
     assert after.elongated <= before.elongated and after.no_square == 0
+
+
+def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_split() -> None:
+    """The office of the realism hundred's seed 75 lays floor 5's board room out as an L whose
+    arm is 3.5 m wide (a board room asks 3.6 m). The pairs mend judges the 60 splits keeping most
+    of the room's cells and finds none; the split that mends it keeps 70 % of them: the board
+    room keeps its body and gives the arm to the private office beside it. ``steps.LAST_PAIRS``
+    judges every split of what the mends and the dissolve leave below its width, the room beside
+    coming out with no defect at all; nothing of the program changes."""
+    from mansion.building import steps
+    from mansion.building.merge import shape_defects
+    from mansion.building.pairs import recut_pairs
+    from mansion.eval.realism import bench_case
+    from mansion.models.room_design import room_design
+
+    kind, floors, description = bench_case(75)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "LAST_PAIRS", False)
+        before = generate_building(description, building_type=kind, floors=floors, seed=75)
+    floor = before.floors[5]
+    assert steps.narrow_rooms(floor.layout.rooms, kind) == {"board_room"}
+    # the same mend, capped as in NARROW_MENDS, finds nothing; uncapped, it mends the room
+    capped = recut_pairs(floor.layout, floor.graph, kind, same_region=before.program.load_bearing_walls)
+    assert steps.narrow_rooms(capped.rooms, kind) == {"board_room"}
+    every = recut_pairs(
+        floor.layout, floor.graph, kind, same_region=before.program.load_bearing_walls, tried=None, clean=True,
+    )
+    assert steps.narrow_rooms(every.rooms, kind) == set()
+
+    after = generate_building(description, building_type=kind, floors=floors, seed=75)
+    mended = after.floors[5]
+    assert steps.narrow_rooms(mended.layout.rooms, kind) == set()
+    assert [r.id for r in mended.layout.rooms] == [r.id for r in floor.layout.rooms]
+    assert mended.relaxations == floor.relaxations
+    check_building(after)
+
+    def defects(room: LayoutRoom) -> set[str]:
+        return shape_defects(Polygon(room.polygon, room.holes), room.room_type, kind)
+
+    had = {r.id: defects(r) for r in floor.layout.rooms}
+    assert had["board_room"] == {"narrow"}
+    for r in mended.layout.rooms:
+        # no room gains a defect (a toilet 5 m by 1.5 m stays as elongated as it was)
+        assert defects(r) <= had[r.id] - {"narrow"}
+        assert r.is_core or r.area + 1e-6 >= room_design(r.room_type).min_area

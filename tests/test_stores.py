@@ -7,7 +7,7 @@ from test_merge import graph_of, layout_of
 from mansion.building.checks import check_graph
 from mansion.building.merge import grid_adjacencies, mask_defects
 from mansion.building.steps import NARROW_WHY, narrow_rooms
-from mansion.building.stores import STORE_TYPE, store_pockets
+from mansion.building.stores import MAX_STORE, STORE_TYPE, store_pockets
 
 CELL = 0.5
 
@@ -74,3 +74,98 @@ def test_a_pocket_that_is_no_sound_store_stays() -> None:
     assert narrow_rooms(layout.rooms, "shopping_mall") == {"shop_1"}
     same_layout, same_graph, notes = store_pockets(layout, graph, "shopping_mall", NARROW_WHY)
     assert notes == [] and same_layout == layout and same_graph == graph
+
+
+# An office's small meeting room M (2.5 m × 3 m, 7.5 m² of a meeting room's 10 m²) between a
+# stair X, a store T and the corridor C; the floor's other meeting room N is sound.
+OFFICE = """
+XXXXXXMMMMMTTTNNNNNNNNNN
+XXXXXXMMMMMTTTNNNNNNNNNN
+XXXXXXMMMMMTTTNNNNNNNNNN
+XXXXXXMMMMMTTTNNNNNNNNNN
+XXXXXXMMMMMTTTNNNNNNNNNN
+XXXXXXMMMMMTTTNNNNNNNNNN
+CCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCC
+CCCCCCCCCCCCCCCCCCCCCCCC
+"""
+OFFICE_NAMES = {
+    "C": ("corridor", "main", "corridor", 4.0),
+    "M": ("meeting_room_1", "Entities", "meeting_room", 10.0),
+    "N": ("meeting_room_2", "Entities", "meeting_room", 10.0),
+    "T": ("storage_1", "Entities", "storage", 2.0),
+    "X": ("stair_1", "stair", "stair", 1.0),
+}
+OFFICE_EDGES = [
+    ("corridor", "meeting_room_1"), ("corridor", "meeting_room_2"), ("corridor", "storage_1"),
+    ("corridor", "stair_1"),
+]
+
+
+def test_a_spare_room_too_small_for_its_type_that_no_neighbour_takes_becomes_a_store() -> None:
+    from mansion.building.merge import may_receive
+    from mansion.building.steps import unfit_rooms
+    from mansion.building.stores import store_spare_rooms
+
+    layout, graph = layout_of(OFFICE, OFFICE_NAMES), graph_of(OFFICE_NAMES, OFFICE_EDGES)
+    unfit = unfit_rooms(layout.rooms, graph)
+    assert unfit == {"meeting_room_1": "laid out at 7.5 m², below its 10 m² minimum"}
+    nodes = {n.id: n for n in graph.nodes}
+    # no room beside it may take its floor: a core, the corridor and a smaller kind of room
+    assert not any(may_receive(nodes["meeting_room_1"], nodes[o]) for o in ("corridor", "storage_1"))
+    stored, more, notes = store_spare_rooms(layout, graph, unfit, "office")
+    assert notes == [
+        "meeting_room_1 dropped, its floor made a store, storage_2 "
+        "(meeting_room_1 laid out at 7.5 m², below its 10 m² minimum)"
+    ]
+    store = stored.room("storage_2")
+    assert store.room_type == STORE_TYPE and store.area == 7.5
+    # the same cells, walls and relations under the store's id; the rest of the floor as it was
+    assert (stored.grid.array() == layout.grid.array()).all()
+    assert stored.grid.ids == ["corridor", "storage_2", "meeting_room_2", "storage_1", "stair_1"]
+    assert stored.adjacencies == grid_adjacencies(stored.grid.array(), stored.grid.ids, CELL)
+    assert [r for r in stored.rooms if r.id != "storage_2"] == [r for r in layout.rooms if r.id != "meeting_room_1"]
+    assert any({e.source, e.target} == {"corridor", "storage_2"} for e in more.edges)
+    assert "meeting_room_1" not in {n.id for n in more.nodes} | {x for e in more.edges for x in (e.source, e.target)}
+    node = next(n for n in more.nodes if n.id == "storage_2")
+    assert node.room_type == STORE_TYPE and node.area == 7.5 and node.min_area == 2.0
+    assert unfit_rooms(stored.rooms, more) == {}
+    check_graph(more, "floor 0")
+
+
+def test_a_room_the_program_cannot_spare_nor_a_home_lives_in_is_never_made_a_store() -> None:
+    from mansion.building.load_bearing import cut_parents
+    from mansion.building.merge import may_spare
+    from mansion.building.steps import unfit_rooms
+    from mansion.building.stores import store_spare_rooms
+
+    layout, graph = layout_of(OFFICE, OFFICE_NAMES), graph_of(OFFICE_NAMES, OFFICE_EDGES)
+    unfit = unfit_rooms(layout.rooms, graph)
+    # a room the description asked for
+    assert store_spare_rooms(layout, graph, unfit, "office", keep={"meeting_room_1"}) == (layout, graph, [])
+    # the floor's only meeting room (its other one an office)
+    names = {**OFFICE_NAMES, "N": ("office_1", "Entities", "office", 9.0)}
+    edges = [(a, "office_1" if b == "meeting_room_2" else b) for a, b in OFFICE_EDGES]
+    alone, alone_graph = layout_of(OFFICE, names), graph_of(names, edges)
+    assert store_spare_rooms(alone, alone_graph, unfit, "office") == (alone, alone_graph, [])
+    # a room a home lives in, though its flat keeps another bedroom
+    home = {
+        **OFFICE_NAMES,
+        "C": ("landing", "main", "landing", 4.0),
+        "M": ("master_bedroom", "Entities", "master_bedroom", 11.5),
+        "N": ("bedroom", "Entities", "bedroom", 7.0),
+    }
+    home_edges = [("landing", b) for b in ("master_bedroom", "bedroom", "storage_1", "stair_1")]
+    flat, flat_graph = layout_of(OFFICE, home), graph_of(home, home_edges)
+    small = unfit_rooms(flat.rooms, flat_graph)
+    assert small == {"master_bedroom": "laid out at 7.5 m², below its 11.5 m² minimum"}
+    assert may_spare(next(n for n in flat_graph.nodes if n.id == "master_bedroom"), flat_graph, cut_parents(flat_graph), frozenset())
+    assert store_spare_rooms(flat, flat_graph, small, "townhouse") == (flat, flat_graph, [])
+    # a room too large to be a store (MAX_STORE: the other meeting room, 8 m by 3 m, were it
+    # below a minimum of 30 m²) stays what it is
+    longer = "\n".join(line + line[-1] * 6 for line in OFFICE.strip().splitlines())
+    big = {**OFFICE_NAMES, "N": ("meeting_room_2", "Entities", "meeting_room", 30.0)}
+    wide, wide_graph = layout_of(longer, big), graph_of(big, OFFICE_EDGES)
+    assert wide.room("meeting_room_2").area == 24.0 > MAX_STORE
+    too_big = {"meeting_room_2": "laid out at 24.0 m², below its 30 m² minimum"}
+    assert store_spare_rooms(wide, wide_graph, too_big, "office") == (wide, wide_graph, [])

@@ -301,7 +301,9 @@ HOME_KINDS: dict[str, str] = {
 }
 
 
-def _kind(room_type: str) -> str | None:
+def home_kind(room_type: str) -> str | None:
+    """The kind of room a home cannot do without that ``room_type`` is (:data:`HOME_KINDS`), or
+    None."""
     key = design_key(room_type)
     return None if key is None else HOME_KINDS.get(key)
 
@@ -350,12 +352,12 @@ def may_spare(gone: RoomNode, graph: RoomGraph, parent: dict[str, str], keep: fr
         return False
     if room_design(gone.room_type).circulation:
         return False
-    kind = _kind(gone.room_type)
+    kind = home_kind(gone.room_type)
     if kind is None:
         return sum(n.room_type == gone.room_type for n in graph.nodes) >= 2
     up = parent.get(gone.id)
     return sum(
-        _kind(n.room_type) == kind for n in graph.nodes if n.id != gone.id and parent.get(n.id) == up
+        home_kind(n.room_type) == kind for n in graph.nodes if n.id != gone.id and parent.get(n.id) == up
     ) >= 1
 
 

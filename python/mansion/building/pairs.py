@@ -75,11 +75,16 @@ def recut_pairs(
     building_type: str | None = None,
     min_contact: float = 1.0,
     same_region: bool = False,
+    tried: int | None = MAX_PAIR_TRIED,
+    clean: bool = False,
 ) -> FloorLayout:
     """``layout`` with each room below its clear width and a room beside it cut again together by
     one straight or corner cut, where the module's rules allow; rooms in the order of their ids,
     their neighbours too, the first neighbour that mends the room taking it.
-    ``same_region``: only within one first-round region (floors that carry walls)."""
+    ``same_region``: only within one first-round region (floors that carry walls). ``tried``:
+    the splits judged in full per pair at most (None: every split, as :data:`mansion.building.steps.LAST_PAIRS` asks).
+    ``clean``: the room beside comes out with no defect at all, not merely none it lacked (a
+    bedroom already below its width never takes a flat's 1.5 m arm off its living room)."""
     nodes = {n.id: n for n in graph.nodes}
     hub = graph.hub.id
     group = first_round_groups(graph) if same_region else None
@@ -97,7 +102,7 @@ def recut_pairs(
             and (group is None or group.get(other) == group.get(room))
         )
         for other in beside:
-            found = _best_pair(layout, graph, room, other, building_type, min_contact)
+            found = _best_pair(layout, graph, room, other, building_type, min_contact, tried, clean)
             if found is not None:
                 layout = found
                 break
@@ -187,9 +192,12 @@ def _best_pair(
     other: str,
     building_type: str | None,
     min_contact: float,
+    tried_most: int | None = MAX_PAIR_TRIED,
+    clean: bool = False,
 ) -> FloorLayout | None:
     """The layout with ``room`` and ``other`` cut again by the best split of their cells, or
-    None when no split passes the module's rules."""
+    None when no split passes the module's rules; at most ``tried_most`` splits judged in full
+    (None: all); ``clean``: ``other`` with no defect at all after."""
     grid = layout.grid
     labels = grid.array()
     ids = list(grid.ids)
@@ -228,7 +236,7 @@ def _best_pair(
     # where it was not below its width): counted for every cut at once, the splits judged in
     # full fall to a third
     sound = area - covered <= (TOLERANCE + SHARE_EPS) * area
-    other_defects = mask_defects(theirs, r_other.room_type, building_type, cell)
+    other_defects = set() if clean else mask_defects(theirs, r_other.room_type, building_type, cell)
     if "narrow" not in other_defects:
         # the other room's side is the rest of each cut
         covered, every = _covered(cells, needed_width(r_other.room_type, building_type), cell)
@@ -252,7 +260,7 @@ def _best_pair(
             continue  # the same cells from another cut
         seen.add(key)
         tried += 1
-        if tried > MAX_PAIR_TRIED:
+        if tried_most is not None and tried > tried_most:
             break
         if not sound[i]:
             continue  # a side below its width by the counts above

@@ -77,7 +77,7 @@ from mansion.building.outlines import outline, shape_measure
 from mansion.building.pairs import recut_pairs
 from mansion.building.recut import _least, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
 from mansion.building.sides import enlarge_rooms, widen_sides
-from mansion.building.stores import store_pockets
+from mansion.building.stores import store_pockets, store_spare_rooms
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError
 from mansion.floorplan import EnergyWeights, SeedPlanner, SolverSettings, solve_floor
 from mansion.models import Core, FloorLayout, Footprint, RoomGraph
@@ -387,6 +387,21 @@ DEFICIT_COVERS: tuple[float, ...] = (3.0,)
 #: Whether a room the mends leave below its clear width or minimum area is, last, left out where
 #: the program can spare it, its floor shared by the rooms beside it (:mod:`mansion.building.dissolve`).
 DISSOLVE = True
+
+#: Whether a room the mends and the dissolve leave below its clear width is, last, cut again
+#: with each room beside it by every straight or corner cut of their cells
+#: (:func:`mansion.building.pairs.recut_pairs` with no cap on the splits judged; the pairs mend of
+#: :data:`NARROW_MENDS` judges the 60 keeping most of the room's cells, as more there leave the
+#: later mends worse rooms), the room beside coming out with no defect at all. An office's board
+#: room of 41 m^2 whose arm is 3.5 m wide (3.6 m asked) keeps its body, 4.5 m wide, and gives the
+#: arm to the private office beside it, a split that keeps 70 % of its cells.
+LAST_PAIRS = True
+
+#: Whether a room the program can spare that every mend, the dissolve and :data:`LAST_PAIRS` leave
+#: below its minimum area or clear width, and that no room beside it may take, is made a store
+#: where it is a sound one (:func:`mansion.building.stores.store_spare_rooms`): an office's third
+#: meeting room of 6.2 m^2 between a stair, the corridor and a store.
+SPARE_STORES = True
 
 #: Whether a floor about to be laid out again without rooms it could not fit (``RESOLVE_*``) is
 #: first mended as it is, and kept with all its rooms when the mends leave none below its
@@ -1036,6 +1051,22 @@ def _mended_floor(
             min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
         )
         mended += dissolved
+    if LAST_PAIRS:
+        # what the dissolve could not spare, if still below its width, cut again with a room
+        # beside it by any split at all (mansion.building.pairs)
+        layout = recut_pairs(
+            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+            same_region=program.load_bearing_walls, tried=None, clean=True,
+        )
+    if SPARE_STORES:
+        # and a room the program can spare that is still below its minimums, which no room
+        # beside it may take, made a store where it is a sound one (mansion.building.stores)
+        still = {
+            **dict.fromkeys(narrow_rooms(layout.rooms, program.building_type), NARROW_WHY),
+            **unfit_rooms(layout.rooms, graph),
+        }
+        layout, graph, stored = store_spare_rooms(layout, graph, still, program.building_type, keep=asked)
+        mended += stored
     return layout, graph, mended
 
 

@@ -17,20 +17,34 @@ elongated) and is at most :data:`MAX_STORE` m² (a larger leftover is a room the
 ask for); every relation of the room keeps its wall. The floor's graph gains the store, with an
 access edge from the room, and its ``relaxations`` a note per store. Nothing of the program is
 lost: the room keeps its type and, with its store, its floor.
+
+:func:`store_spare_rooms` is the last resort for a whole room: one the mends and the dissolve
+leave below its minimum area or clear width, that the program can spare
+(:func:`mansion.building.merge.may_spare`: not the hub, a core, circulation, a room the
+description asked for, a home's only room of its kind in its flat nor the floor's last room of
+its type) but no room beside it may take (its only neighbours a corridor, a core and a store
+smaller than it), and that is no room a home lives in (:data:`mansion.building.merge.HOME_KINDS`:
+a flat's master bedroom of 8.8 m^2 stays a bedroom), becomes a store where it is a sound one (the table's 2 m^2 and 1 m width, a
+usable square, not elongated, at most :data:`MAX_STORE` m^2) and has no rooms cut from it. An
+office's third meeting room laid out at 6.2 m^2 of its 10 m^2 between a stair, the corridor and
+a store becomes ``storage_3``: the program loses that meeting room, recorded in the floor's
+``relaxations``, as it would if the room were dropped; the store keeps its relations (the door
+from the corridor).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, mask_defects, rooms_from_grid
+from mansion.building.load_bearing import cut_parents
+from mansion.building.merge import DOOR_WIDTH, grid_adjacencies, home_kind, mask_defects, may_spare, rooms_from_grid
 from mansion.building.recut import _kept_walls, _pieces, _walls, _wide_rectangle, sound_body
 from mansion.models.graph import RoomEdge, RoomGraph
-from mansion.models.layout import FloorLayout
+from mansion.models.layout import Adjacency, FloorLayout
 from mansion.models.room_shape import EPS
 from mansion.planning.topology import design_minimums, min_width
 
-__all__ = ["MAX_STORE", "STORE_TYPE", "store_pockets"]
+__all__ = ["MAX_STORE", "STORE_TYPE", "store_pockets", "store_spare_rooms"]
 
 #: The room type a pocket becomes.
 STORE_TYPE = "storage"
@@ -130,3 +144,72 @@ def _stored(
         edges=[*graph.edges, *(RoomEdge(source=room, target=sid) for sid, _ in stores)],
     )
     return laid, more, [sid for sid, _ in stores]
+
+
+def store_spare_rooms(
+    layout: FloorLayout,
+    graph: RoomGraph,
+    unfit: dict[str, str],
+    building_type: str | None,
+    keep: frozenset[str] | set[str] = frozenset(),
+) -> tuple[FloorLayout, RoomGraph, list[str]]:
+    """``layout`` and ``graph`` with each room of ``unfit`` (id -> why) that the program can
+    spare made a store where it is a sound one (the module's rules), the smallest first; with a
+    relaxation note per room. ``keep``: rooms the description asked for, never made stores."""
+    notes: list[str] = []
+    cell = layout.grid.cell_size
+    for room in sorted(unfit, key=lambda r: (layout.room(r).area, r)):
+        nodes = {n.id: n for n in graph.nodes}
+        node, laid = nodes.get(room), layout.room(room)
+        parent = cut_parents(graph)
+        if node is None or room in parent.values() or not may_spare(node, graph, parent, frozenset(keep)):
+            continue
+        # a room a home lives in stays one (a master bedroom of 8.8 m^2 is no store)
+        if home_kind(node.room_type) is not None:
+            continue
+        if laid.area > MAX_STORE + EPS:
+            continue
+        labels = layout.grid.array()
+        mask = labels == layout.grid.ids.index(room)
+        if mask_defects(mask, STORE_TYPE, building_type, cell):
+            continue
+        n = 1
+        while f"{STORE_TYPE}_{n}" in nodes:
+            n += 1
+        sid = f"{STORE_TYPE}_{n}"
+        layout, graph = _renamed(layout, graph, room, sid, building_type)
+        notes.append(f"{room} dropped, its floor made a store, {sid} ({room} {unfit[room]})")
+    return layout, graph, notes
+
+
+def _renamed(
+    layout: FloorLayout, graph: RoomGraph, room: str, sid: str, building_type: str | None,
+) -> tuple[FloorLayout, RoomGraph]:
+    """``layout`` and ``graph`` with ``room`` a store of id ``sid``: its cells, walls and
+    relations kept, its type, planned area and minimums a store's."""
+
+    def name(rid: str) -> str:
+        return sid if rid == room else rid
+
+    laid = layout.room(room)
+    grid = layout.grid.model_copy(update={"ids": [name(r) for r in layout.grid.ids]})
+    rooms = [
+        r.model_copy(update={"id": sid, "room_type": STORE_TYPE, "type": "Entities", "target_area": r.area})
+        if r.id == room else r
+        for r in layout.rooms
+    ]
+    adjacencies = [
+        Adjacency(a=name(a.a), b=name(a.b), contact=a.contact, longest=a.longest) for a in layout.adjacencies
+    ]
+    node = next(n for n in graph.nodes if n.id == room)
+    store = node.model_copy(update={
+        "id": sid, "type": "Entities", "room_type": STORE_TYPE, "area": laid.area,
+        "floor_material": None, "wall_material": None, "open_relation": "door",
+        "min_width": min_width(STORE_TYPE, laid.area, building_type),
+        **design_minimums(STORE_TYPE, building_type),
+    })
+    more = RoomGraph(
+        nodes=[store if n.id == room else n for n in graph.nodes],
+        edges=[e.model_copy(update={"source": name(e.source), "target": name(e.target)}) for e in graph.edges],
+    )
+    return layout.model_copy(update={"rooms": rooms, "grid": grid, "adjacencies": adjacencies}), more
