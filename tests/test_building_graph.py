@@ -12,7 +12,7 @@ import json
 import pytest
 
 from mansion import generate_building
-from mansion.agents.building_graph import run_building_graph
+from mansion.building.graph import run_building_graph
 from mansion.building.generate import solver_options
 from mansion.planning.planner import Constraints, OfflinePlanner
 

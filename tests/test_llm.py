@@ -19,7 +19,7 @@ from mansion import Building, Footprint, PlannerError, generate_building
 from mansion.agents.llm import DEFAULT_MODEL, AnswerRejected, LLMClient
 from mansion.agents.prompts import PROMPTS, load_prompt
 from mansion.building.checks import check_building
-from mansion.floorplan.seeds import SeedRequest
+from mansion.models.seeds import SeedRequest
 from mansion.planning import planners as planner_module
 from mansion.planning.llm import AnthropicBuildingPlanner
 from mansion.planning.llm_program import Frame, ProgramAnswer, program_from_answer

@@ -1,6 +1,6 @@
 # Type stub of the compiled Rust binding (crates/mansion-py), checked against the built module by
 # `python -m mypy.stubtest mansion._core` (tests/test_stubs.py). All JSON shapes are described in
-# the Python models: mansion.models (graph, footprint, layout) and mansion.floorplan.seeds.
+# the Python models: mansion.models (graph, footprint, layout) and mansion.models.seeds.
 from collections.abc import Callable
 
 import numpy as np

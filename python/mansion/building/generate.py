@@ -11,7 +11,7 @@ floor copies, the checks) are in :mod:`mansion.building.steps`.
 
 The offline planner answers in milliseconds, so its floors are solved here one after another.
 Any other planner (Claude) runs through the LangGraph pipeline of
-:mod:`mansion.agents.building_graph`, which uses the same steps with the floors fanned out.
+:mod:`mansion.building.graph`, which uses the same steps with the floors fanned out.
 """
 
 from __future__ import annotations
@@ -168,7 +168,7 @@ def generate_building(
     if not isinstance(plan, OfflinePlanner):
         # LLM planners wait on the network: the LangGraph pipeline fans the floors out. It is
         # imported only here so the offline path never loads langgraph.
-        from mansion.agents.building_graph import run_building_graph
+        from mansion.building.graph import run_building_graph
 
         return run_building_graph(
             plan, description, constraints, seed=seed, solver=solver, progress=progress

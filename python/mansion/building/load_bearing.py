@@ -21,7 +21,7 @@ import numpy as np
 from shapely.geometry import LineString, MultiLineString, Polygon, box
 from shapely.ops import linemerge, polylabel, unary_union
 
-from mansion.floorplan.seeds import ChildSeed, SeedPlan, SeedPlanner, SeedRequest
+from mansion.models.seeds import ChildSeed, SeedPlan, SeedPlanner, SeedRequest
 from mansion.models import FloorLayout, Footprint, RoomGraph
 from mansion.models.graph import RoomNode
 from mansion.models.footprint import Point

@@ -1,6 +1,6 @@
 """The steps of the paper's global multi-floor generation that both drivers share: the offline
 loop of :func:`mansion.building.generate.generate_building` and the LangGraph pipeline of
-:mod:`mansion.agents.building_graph` (SolveFloorLayout with its retry ladder, floor copies, the
+:mod:`mansion.building.graph` (SolveFloorLayout with its retry ladder, floor copies, the
 final checks, per-purpose seeds). Neither driver is imported here, so the two never import each
 other.
 

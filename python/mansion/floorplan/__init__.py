@@ -1,6 +1,6 @@
 """The single-floor solver stage: cut rounds driven by seed planners, energy weights, solve_floor."""
 
-from mansion.floorplan.seeds import (
+from mansion.models.seeds import (
     ChildSeed,
     FixedSeedPlanner,
     PlacedRoom,

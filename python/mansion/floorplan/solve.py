@@ -12,7 +12,7 @@ from pydantic import ValidationError
 
 from mansion._native import native
 from mansion.exceptions import InvalidInputError, MansionError
-from mansion.floorplan.seeds import PlanFunction, SeedPlanner, planner_callback
+from mansion.models.seeds import PlanFunction, SeedPlanner, planner_callback
 from mansion.floorplan.weights import EnergyWeights, SolverSettings
 from mansion.models import FloorLayout, Footprint, RoomGraph
 from mansion.models._validation import describe_validation_error, validate_input

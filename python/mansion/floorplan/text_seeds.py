@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from mansion.floorplan.seeds import ChildSeed, SeedPlan, SeedRequest
+from mansion.models.seeds import ChildSeed, SeedPlan, SeedRequest
 from mansion.models import Footprint, RoomGraph
 from mansion.planning.spatial_language import KnownRoom, Reading, Statement, read_description
 from mansion.planning.spatial_seeds import FreeGrid, SeedReport, SeedRoom, _honoured, place_seeds

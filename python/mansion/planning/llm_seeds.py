@@ -22,7 +22,7 @@ from shapely.geometry import Polygon, box
 
 from mansion.agents.llm import AnswerRejected, image_block
 from mansion.agents.prompts import load_prompt
-from mansion.floorplan.seeds import ChildSeed, SeedBox, SeedPlan, SeedRequest
+from mansion.models.seeds import ChildSeed, SeedBox, SeedPlan, SeedRequest
 from mansion.models.footprint import Footprint
 from mansion.models.graph import RoomGraph
 from mansion.planning.preview import region_png
@@ -99,7 +99,7 @@ def plan_from_answer(answer: SeedAnswer, request: SeedRequest) -> SeedPlan:
 
 
 class AnthropicSeedPlanner:
-    """A :class:`~mansion.floorplan.seeds.SeedPlanner` asking Claude, one call per cut round.
+    """A :class:`~mansion.models.seeds.SeedPlanner` asking Claude, one call per cut round.
 
     ``footprint`` (outline and cores) and ``graph`` (room types, areas and relations) give the
     model the whole floor around the round; ``requirement`` is the floor's brief.
