@@ -125,3 +125,22 @@ def test_cell_sums_are_the_python_loops_to_the_bit() -> None:
                 count[k] = count.get(k, 0) + 1
         want = [(k, count[k], sums[k][0], sums[k][1]) for k in sorted(count)]
         assert _core.cell_sums(grid, ox, oy, s) == want  # exact floats, not approximately
+
+
+def test_row_runs_number_each_rows_runs_as_a_loop_over_the_rows_would() -> None:
+    from mansion._grid import row_runs
+
+    rng = np.random.default_rng(7)
+    for _ in range(50):
+        h, w = (int(x) for x in rng.integers(1, 12, size=2))
+        mask = rng.random((h, w)) < 0.6
+        ids, count = row_runs(mask)
+        expected = np.zeros((h, w), dtype=np.int64)
+        n = 0
+        for r in range(h):
+            for c in range(w):
+                if mask[r, c]:
+                    if c == 0 or not mask[r, c - 1]:
+                        n += 1  # a run never joins the end of the row above
+                    expected[r, c] = n
+        assert (ids == expected).all() and count == n

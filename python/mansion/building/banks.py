@@ -69,6 +69,7 @@ from functools import lru_cache
 import numpy as np
 
 from mansion import _core
+from mansion._grid import row_runs
 from mansion.building.merge import grid_adjacencies, mask_defects, rooms_from_grid
 from mansion.building.recut import _pieces, _thin_parts, edge_grown
 from mansion.models.graph import RoomEdge, RoomGraph
@@ -192,16 +193,10 @@ def _rays(inside: np.ndarray) -> dict[str, np.ndarray]:
 def _run_lengths(mask: np.ndarray, axis: int) -> np.ndarray:
     """Each True cell's run length of True cells along ``axis`` (1: along rows, 0: along
     columns); 0 elsewhere."""
-    m = mask if axis == 1 else mask.T
-    h, w = m.shape
-    flat = np.zeros((h, w + 1), dtype=bool)
-    flat[:, :w] = m
-    flat = flat.ravel()
-    starts = flat & ~np.concatenate(([False], flat[:-1]))
-    ids = np.cumsum(starts) * flat
-    counts = np.bincount(ids)
+    ids, count = row_runs(mask if axis == 1 else mask.T)
+    counts = np.bincount(ids.ravel(), minlength=count + 1)
     counts[0] = 0
-    out = counts[ids].reshape(h, w + 1)[:, :w].astype(np.int32)
+    out = counts[ids].astype(np.int32)
     return out if axis == 1 else out.T
 
 

@@ -18,6 +18,8 @@ import shapely
 from numpy.typing import NDArray
 from shapely.geometry import LineString, MultiLineString, Polygon
 
+from mansion._grid import row_runs
+
 __all__ = ["PASSAGE_MARGIN", "FreeSpace", "corners_within", "footprint", "passable", "rectangle", "solid_walls"]
 
 #: An agent passes a doorway or opening only if it is this much wider than the agent (m).
@@ -371,14 +373,7 @@ class FreeSpace:
 def _runs(free: Mask) -> tuple[NDArray[np.int64], int]:
     """Each free cell's run along its row (axis 1), numbered from 1 (0: not free), and the
     number of runs."""
-    h, w = free.shape
-    # a blocked column after each row keeps runs from joining across rows
-    f = np.zeros((h, w + 1), dtype=bool)
-    f[:, :w] = free
-    flat = f.ravel()
-    starts = flat & ~np.concatenate(([False], flat[:-1]))
-    run = np.cumsum(starts) * flat
-    return run.reshape(h, w + 1)[:, :w], int(run.max(initial=0))
+    return row_runs(free)
 
 
 def _spread(reached: Mask, runs: NDArray[np.int64], count: int) -> Mask:
