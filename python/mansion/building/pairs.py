@@ -82,8 +82,8 @@ def recut_pairs(
     one straight or corner cut, where the module's rules allow; rooms in the order of their ids,
     their neighbours too, the first neighbour that mends the room taking it.
     ``same_region``: only within one first-round region (floors that carry walls). ``tried``:
-    the splits judged in full per pair at most (None: every split, as :data:`mansion.building.steps.LAST_PAIRS` asks).
-    ``clean``: the room beside comes out with no defect at all, not merely none it lacked (a
+    the splits judged in full per pair at most (None: every split, as
+    :data:`mansion.building.steps.LAST_PAIRS` asks). ``clean``: the room beside comes out with no defect at all, not merely none it lacked (a
     bedroom already below its width never takes a flat's 1.5 m arm off its living room)."""
     nodes = {n.id: n for n in graph.nodes}
     hub = graph.hub.id

@@ -46,8 +46,11 @@ its doors keeps them as halls (:mod:`mansion.building.halls`: a play hall's arm 
 room becomes a corridor), what is still below its width merges like a room too small where the
 merged room comes out at its width (:data:`MERGE_NARROW`: two wards 2.5 m wide become one), and
 a region too tight for its rooms is laid out as a row without the smallest it can drop; each
-recorded. Last, parts of rooms one cell wide are widened from a neighbour
-(:func:`mansion.building.recut.widen_passages`).
+recorded. Then parts of rooms one cell wide are widened from a neighbour
+(:func:`mansion.building.recut.widen_passages`). Last, a room still below its minimums is
+dissolved where the program can spare it (:mod:`mansion.building.dissolve`), one still below its
+width is cut again with a room beside it by any split (:data:`LAST_PAIRS`), and a spare room no
+neighbour takes becomes a store (:data:`SPARE_STORES`), each program change recorded.
 """
 
 from __future__ import annotations

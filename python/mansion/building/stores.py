@@ -23,10 +23,10 @@ leave below its minimum area or clear width, that the program can spare
 (:func:`mansion.building.merge.may_spare`: not the hub, a core, circulation, a room the
 description asked for, a home's only room of its kind in its flat nor the floor's last room of
 its type) but no room beside it may take (its only neighbours a corridor, a core and a store
-smaller than it), and that is no room a home lives in (:data:`mansion.building.merge.HOME_KINDS`:
-a flat's master bedroom of 8.8 m^2 stays a bedroom), becomes a store where it is a sound one (the table's 2 m^2 and 1 m width, a
-usable square, not elongated, at most :data:`MAX_STORE` m^2) and has no rooms cut from it. An
-office's third meeting room laid out at 6.2 m^2 of its 10 m^2 between a stair, the corridor and
+smaller than it), that is no room a home lives in (:data:`mansion.building.merge.HOME_KINDS`: a
+flat's master bedroom of 8.8 m^2 stays a bedroom) and has no rooms cut from it, becomes a store
+where it is a sound one (the table's 2 m^2 and 1 m width, a usable square, not elongated, at
+most :data:`MAX_STORE` m^2). An office's third meeting room laid out at 6.2 m^2 of its 10 m^2 between a stair, the corridor and
 a store becomes ``storage_3``: the program loses that meeting room, recorded in the floor's
 ``relaxations``, as it would if the room were dropped; the store keeps its relations (the door
 from the corridor).
