@@ -825,6 +825,7 @@ def test_a_room_below_its_width_and_a_room_beside_it_are_cut_again_together() ->
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "NARROW_MENDS", tuple(m for m in steps.NARROW_MENDS if m != "pairs"))
         mp.setattr(steps, "LAST_PAIRS", False)
+        mp.setattr(steps, "SPARE_OPTIONAL", False)  # else the lounge, optional, is dissolved
         narrow, rooms, before = ground()
     assert narrow == {"lounge"}
     narrow_after, rooms_after, after = ground()

@@ -253,3 +253,35 @@ def test_cli_realism_generates_with_relayouts(tmp_path) -> None:  # noqa: ANN001
     assert json.loads(out.read_text())["overall"]["below_width"] == 0
     r = CliRunner().invoke(app, ["eval", "realism", "--generate", "1", "--relayouts", "9"])
     assert r.exit_code != 0
+
+
+def test_an_optional_room_the_last_of_its_type_may_be_spared_last() -> None:
+    """Kindergarten 78 of the realism hundred lays its ground floor's staff office out at 7.5 m²
+    of its 9 m² beside a sick room at 7.5 m², both the floor's only ones of their type, so
+    neither could be dissolved. Both are rooms the template plans only where they fit
+    (``optional``); ``steps.SPARE_OPTIONAL`` lets the last steps spare them: the sick room's floor
+    goes to the staff office, which comes to its minimum, recorded."""
+    from mansion.building.steps import unfit_rooms
+
+    kind, floors, text = bench_case(78)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "SPARE_OPTIONAL", False)
+        before = generate_building(text, building_type=kind, floors=floors, seed=78).floors[0]
+    assert unfit_rooms(before.layout.rooms, before.graph) == {
+        "staff_office": "laid out at 7.5 m², below its 9 m² minimum",
+    }
+    built = generate_building(text, building_type=kind, floors=floors, seed=78)
+    after = built.floors[0]
+    assert unfit_rooms(after.layout.rooms, after.graph) == {}
+    # the template's optional rooms, never one the description asked for
+    optional = steps._optional_rooms(built.program, 0, before.graph, set())
+    assert {"staff_office", "sick_room"} <= optional and "group_room_1" not in optional
+    assert "staff_office" not in steps._optional_rooms(built.program, 0, before.graph, {"staff_office"})
+    gone = [n for n in after.relaxations if n not in before.relaxations]
+    assert gone == [
+        "sick_room dropped, its floor shared by staff_office "
+        "(staff_office laid out at 7.5 m², below its 9 m² minimum)"
+    ]
+    assert {r.id for r in before.layout.rooms} - {r.id for r in after.layout.rooms} == {"sick_room"}
+    office = after.layout.room("staff_office")
+    assert office.area == pytest.approx(15.0)

@@ -148,6 +148,9 @@ def test_a_room_the_program_cannot_spare_nor_a_home_lives_in_is_never_made_a_sto
     edges = [(a, "office_1" if b == "meeting_room_2" else b) for a, b in OFFICE_EDGES]
     alone, alone_graph = layout_of(OFFICE, names), graph_of(names, edges)
     assert store_spare_rooms(alone, alone_graph, unfit, "office") == (alone, alone_graph, [])
+    # unless the floor's template plans it only where it fits (an optional room)
+    stored, _, notes = store_spare_rooms(alone, alone_graph, unfit, "office", optional={"meeting_room_1"})
+    assert stored.room("storage_2").area == 7.5 and len(notes) == 1
     # a room a home lives in, though its flat keeps another bedroom
     home = {
         **OFFICE_NAMES,

@@ -14,8 +14,9 @@ minimum area or without a usable square, the smallest first, where
 
 - the program can do without it (:func:`mansion.building.merge.may_spare`: never the hub, a
   core, circulation, a room the description asked for, a home's only room of its kind in its
-  flat, the floor's last room of its type); the rooms cut from it go with it only when they are
-  its own bathroom (a guest room's ensuite), else it stays;
+  flat, the floor's last room of its type, unless its floor's template plans it only where it
+  fits: ``optional``, :data:`mansion.building.steps.SPARE_OPTIONAL`); the rooms cut from it go
+  with it only when they are its own bathroom (a guest room's ensuite), else it stays;
 - its floor goes to one to :data:`MAX_SHARERS` of the rooms beside it that may take it
   (:func:`mansion.building.merge.may_receive`: never a core, circulation, across the sanitary
   line or to a smaller kind of room; the region it was cut from or a room cut from the same
@@ -71,12 +72,16 @@ def dissolve_unfit_rooms(
     keep: Iterable[str] = (),
     min_contact: float = 1.0,
     same_region: bool = False,
+    optional: Iterable[str] = (),
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """``layout`` and ``graph`` with each room of ``unfit`` (id → why) dissolved where the
     module's rules allow, the smallest first; with a relaxation note per room dissolved.
     ``keep``: rooms the description asked for, never dissolved. ``same_region``: the floor
-    carries walls (its floor goes only to rooms of its first-round region)."""
+    carries walls (its floor goes only to rooms of its first-round region). ``optional``: rooms
+    the program can do without though they are the last of their type
+    (:func:`mansion.building.merge.may_spare`)."""
     kept = frozenset(keep)
+    extra = frozenset(optional)
     notes: list[str] = []
     rooms = {r.id: r for r in layout.rooms}
     grew: set[str] = set()
@@ -87,12 +92,12 @@ def dissolve_unfit_rooms(
         # a room that took a dissolved room's floor may have come out at its width and area
         if room in grew and _fit(layout, nodes[room], building_type):
             continue
-        found = _best_dissolve(layout, graph, room, building_type, kept, min_contact, same_region)
+        found = _best_dissolve(layout, graph, room, building_type, kept, min_contact, same_region, optional=extra)
         # a room the program cannot spare (the floor's only music room, a board room) may take
         # the floor of a room beside it that it can, where that brings it to its width and area
         for other in [] if found is not None else _beside(layout, room):
             found = _best_dissolve(
-                layout, graph, other, building_type, kept, min_contact, same_region, cure=room,
+                layout, graph, other, building_type, kept, min_contact, same_region, cure=room, optional=extra,
             )
             if found is not None:
                 break
@@ -146,15 +151,17 @@ def _best_dissolve(
     min_contact: float,
     same_region: bool,
     cure: str | None = None,
+    optional: frozenset[str] = frozenset(),
 ) -> tuple[FloorLayout, RoomGraph, list[str], list[str]] | None:
     """(the layout, the graph, the rooms that went, the rooms that took their floor) of the best
     way to dissolve ``room``, or None when none passes the module's rules. ``cure``: a room that
-    must be among the takers and come out at its width and minimum area."""
+    must be among the takers and come out at its width and minimum area. ``optional``: as for
+    :func:`dissolve_unfit_rooms`."""
     nodes = {n.id: n for n in graph.nodes}
     if room not in nodes:
         return None
     parent = cut_parents(graph)
-    if not may_spare(nodes[room], graph, parent, keep):
+    if not may_spare(nodes[room], graph, parent, keep, optional):
         return None
     own = sorted(kid for kid, up in parent.items() if up == room)
     # only a room's own bathroom goes with it (a guest room's ensuite); a room others were cut

@@ -343,15 +343,25 @@ def may_receive(gone: RoomNode, stays: RoomNode) -> bool:
     return room_design(stays.room_type).min_area >= room_design(gone.room_type).min_area
 
 
-def may_spare(gone: RoomNode, graph: RoomGraph, parent: dict[str, str], keep: frozenset[str]) -> bool:
+def may_spare(
+    gone: RoomNode,
+    graph: RoomGraph,
+    parent: dict[str, str],
+    keep: frozenset[str],
+    optional: frozenset[str] = frozenset(),
+) -> bool:
     """Whether the program can do without ``gone`` (:func:`_may_drop`'s rules on the room that
     goes): not the hub, a core, circulation nor a room the description asked for; a room a home
     needs only where its flat keeps another of its kind, any other only where the floor keeps
-    another of its type."""
+    another of its type, but for the rooms of ``optional`` (ids of rooms the floor's template
+    plans only where they fit: a school's art room, a kindergarten's staff office), which the
+    program can always do without."""
     if gone.id == graph.hub.id or gone.is_core or gone.id in keep:
         return False
     if room_design(gone.room_type).circulation:
         return False
+    if gone.id in optional:
+        return True
     kind = home_kind(gone.room_type)
     if kind is None:
         return sum(n.room_type == gone.room_type for n in graph.nodes) >= 2

@@ -406,6 +406,12 @@ LAST_PAIRS = True
 #: meeting room of 6.2 m^2 between a stair, the corridor and a store.
 SPARE_STORES = True
 
+#: Whether the last steps (the dissolve, :data:`SPARE_STORES`) may spare a room whose type the
+#: floor's template plans only where it fits (``Rm(..., optional=True)``: a school's art room, a
+#: kindergarten's staff office) though it is the floor's last of its type, as the banks leave
+#: such rooms out where no bay is left for them.
+SPARE_OPTIONAL = True
+
 #: Whether a floor about to be laid out again without rooms it could not fit (``RESOLVE_*``) is
 #: first mended as it is, and kept with all its rooms when the mends leave none below its
 #: minimum area or width, or when the layout without rooms, mended too, leaves no fewer. The
@@ -461,7 +467,7 @@ def _fewest_left_out(
             # measured on the second hundred: none of the 10 such layouts (of 26 mended) came out
             # of its mends without a room below its minimums, so they are not mended
             continue
-        fixed = _mended_floor(again[0], again[1], program, asked, solver)
+        fixed = _mended_floor(again[0], again[1], program, asked, solver, index)
         bad = _bad_counts(fixed[0], fixed[1], program.building_type)
         if not any(bad) and all(a <= b for a, b in zip(misshapen(fixed[0].rooms), shape)):
             return (*again, notes), fixed
@@ -842,7 +848,7 @@ def _solve_building_floor(
             # the mends may bring every room of this layout to its minimums: then it is kept with
             # all its rooms, and nothing is left out for what the mends would have mended; else
             # it is kept if the layout without rooms, mended too, does no better (below)
-            premended = _mended_floor(layout, graph, program, asked, solver)
+            premended = _mended_floor(layout, graph, program, asked, solver, index)
             if not any(_bad_counts(premended[0], premended[1], program.building_type)):
                 tries = 0
         if tries and dropped and not same and DEFICIT_COVERS:
@@ -874,7 +880,7 @@ def _solve_building_floor(
     elif premended is not None and not relaid:
         layout, graph, mended = premended
     elif repairs:
-        layout, graph, mended = _mended_floor(layout, graph, program, asked, solver)
+        layout, graph, mended = _mended_floor(layout, graph, program, asked, solver, index)
         bt = program.building_type
         if premended is not None and _bad_counts(*premended[:2], bt) <= _bad_counts(layout, graph, bt):
             # the layout without rooms came out of its mends no better: keep every room
@@ -982,9 +988,10 @@ def _banked_floor(
 
 def _mended_floor(
     layout: FloorLayout, graph: RoomGraph, program: BuildingProgram, asked: set[str], solver: dict[str, Any],
+    index: int,
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
-    """The floor's mends, in order, on a solved ``layout``: the layout, the graph (rooms merged or
-    dissolved) and a relaxation note per change of the program."""
+    """The floor's mends, in order, on a solved ``layout`` of floor ``index``: the layout, the
+    graph (rooms merged or dissolved) and a relaxation note per change of the program."""
     mended: list[str] = []
     # What laying the floor out again could not mend (floors that carry walls, layouts
     # refused, rooms a floor cannot leave out) is mended within one first-round region where
@@ -1052,6 +1059,7 @@ def _mended_floor(
         layout, graph, dissolved = dissolve_unfit_rooms(
             layout, graph, still, program.building_type, keep=asked,
             min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+            optional=_optional_rooms(program, index, graph, asked) if SPARE_OPTIONAL else (),
         )
         mended += dissolved
     if LAST_PAIRS:
@@ -1068,9 +1076,25 @@ def _mended_floor(
             **dict.fromkeys(narrow_rooms(layout.rooms, program.building_type), NARROW_WHY),
             **unfit_rooms(layout.rooms, graph),
         }
-        layout, graph, stored = store_spare_rooms(layout, graph, still, program.building_type, keep=asked)
+        layout, graph, stored = store_spare_rooms(
+            layout, graph, still, program.building_type, keep=asked,
+            optional=_optional_rooms(program, index, graph, asked) if SPARE_OPTIONAL else frozenset(),
+        )
         mended += stored
     return layout, graph, mended
+
+
+def _optional_rooms(program: BuildingProgram, index: int, graph: RoomGraph, asked: set[str]) -> frozenset[str]:
+    """The rooms of floor ``index`` whose type its template plans only where it fits (a school's
+    art room, a kindergarten's staff office) and that the description did not ask for: the last
+    steps may spare them though they are the last of their type (:data:`SPARE_OPTIONAL`). None
+    where the building type has no template (a planner's own type)."""
+    try:
+        template = floor_template(program.building_type, index, program.floor_count)
+    except InvalidInputError:
+        return frozenset()
+    optional = {rule.room_type for rule in template.rooms if rule.optional}
+    return frozenset(n.id for n in graph.nodes if n.room_type in optional and n.id not in asked)
 
 
 def mend_narrow(

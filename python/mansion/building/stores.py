@@ -152,17 +152,22 @@ def store_spare_rooms(
     unfit: dict[str, str],
     building_type: str | None,
     keep: frozenset[str] | set[str] = frozenset(),
+    optional: frozenset[str] | set[str] = frozenset(),
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """``layout`` and ``graph`` with each room of ``unfit`` (id -> why) that the program can
     spare made a store where it is a sound one (the module's rules), the smallest first; with a
-    relaxation note per room. ``keep``: rooms the description asked for, never made stores."""
+    relaxation note per room. ``keep``: rooms the description asked for, never made stores.
+    ``optional``: rooms the program can do without though they are the last of their type
+    (:func:`mansion.building.merge.may_spare`)."""
     notes: list[str] = []
     cell = layout.grid.cell_size
     for room in sorted(unfit, key=lambda r: (layout.room(r).area, r)):
         nodes = {n.id: n for n in graph.nodes}
         node, laid = nodes.get(room), layout.room(room)
         parent = cut_parents(graph)
-        if node is None or room in parent.values() or not may_spare(node, graph, parent, frozenset(keep)):
+        if node is None or room in parent.values():
+            continue
+        if not may_spare(node, graph, parent, frozenset(keep), frozenset(optional)):
             continue
         # a room a home lives in stays one (a master bedroom of 8.8 m^2 is no store)
         if home_kind(node.room_type) is not None:
