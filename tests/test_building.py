@@ -343,6 +343,9 @@ def test_leave_out_drops_repeated_rooms_with_their_own_rooms_never_the_last_of_a
     # nothing to leave out: the same graph
     same, notes = leave_out(graph, {"nurse_station": why})
     assert same is graph and notes == []
+    # unless the template plans it only where it fits: then the last of its type goes too
+    fewer, notes = leave_out(graph, {"nurse_station": why}, optional={"nurse_station"})
+    assert "nurse_station" not in {n.id for n in fewer.nodes} and notes == [f"nurse_station left out: {why}"]
 
 
 def test_leave_out_drops_a_wing_corridor_whose_rooms_all_go() -> None:
@@ -878,3 +881,28 @@ def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_
         # no room gains a defect (a toilet 5 m by 1.5 m stays as elongated as it was)
         assert defects(r) <= had[r.id] - {"narrow"}
         assert r.is_core or r.area + 1e-6 >= room_design(r.room_type).min_area
+
+
+def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_again_without_it() -> None:
+    """School 77 of the realism hundred lays its top floor's art room out as an L round a stair,
+    4 m wide where an art room asks 5.4 m, after every mend and its relayout; nothing beside it
+    may take its floor (the corridor, the stair, the toilets). The template plans an art room only
+    where it fits (``optional``): ``steps.LEAVE_OPTIONAL`` lays the floor out again whole without
+    it, kept as a relayout is (fewer rooms bad, none more misshapen), and records it."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(77)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "LEAVE_OPTIONAL", False)
+        before = generate_building(description, building_type=kind, floors=floors, seed=77).floors[9]
+    assert steps.narrow_rooms(before.layout.rooms, kind) == {"art_room"}
+    after = generate_building(description, building_type=kind, floors=floors, seed=77).floors[9]
+    assert steps.narrow_rooms(after.layout.rooms, kind) == set()
+    assert not steps.unfit_rooms(after.layout.rooms, after.graph)
+    assert "art_room left out: laid out narrower than its clear width" in after.relaxations
+    assert {r.id for r in before.layout.rooms} - {r.id for r in after.layout.rooms} == {"art_room"}
+    assert sum(steps.misshapen(after.layout.rooms)) <= sum(steps.misshapen(before.layout.rooms))
+    # no relayout asked, no floor laid out again without it
+    fastest = generate_building(description, building_type=kind, floors=floors, seed=77, relayouts=0).floors[9]
+    assert "art_room" in {r.id for r in fastest.layout.rooms}

@@ -412,6 +412,12 @@ SPARE_STORES = True
 #: such rooms out where no bay is left for them.
 SPARE_OPTIONAL = True
 
+#: Whether a floor its relayouts (:func:`solve_building_floor`) still leave with rooms below
+#: their minimums is, last, laid out again whole without such of them as its template plans only
+#: where they fit (:func:`_without_optional`: a school's art room wrapped round a stair), though
+#: the last of their type; kept as a relayout is, each room left out recorded.
+LEAVE_OPTIONAL = True
+
 #: Whether a floor about to be laid out again without rooms it could not fit (``RESOLVE_*``) is
 #: first mended as it is, and kept with all its rooms when the mends leave none below its
 #: minimum area or width, or when the layout without rooms, mended too, leaves no fewer. The
@@ -563,12 +569,13 @@ def misshapen(rooms: Iterable[LayoutRoom]) -> tuple[int, int]:
 
 
 def leave_out(
-    graph: RoomGraph, unfit: dict[str, str], keep: Iterable[str] = ()
+    graph: RoomGraph, unfit: dict[str, str], keep: Iterable[str] = (), optional: Iterable[str] = (),
 ) -> tuple[RoomGraph, list[str]]:
     """``graph`` without the ``unfit`` rooms (id → why) an architect would leave out of a floor
     too tight for them, each with the rooms cut from it (a ward with its ensuite), and a
     relaxation note per room: only a room of a type the floor has more of (a ward, a guest room,
-    a toilet of a block; one of each type stays), that is neither the hub, a core nor
+    a toilet of a block; one of each type stays) or one of ``optional`` (rooms the floor's
+    template plans only where they fit, :data:`LEAVE_OPTIONAL`), that is neither the hub, a core nor
     circulation, and whose rooms are at most three, none of them in ``keep`` (the rooms the
     description asked for: "two operating theatres" keeps both). A wing's corridor whose rooms
     all go goes too, with a note: it would serve nothing (six floors of the offline hundreds had
@@ -588,6 +595,7 @@ def leave_out(
         return out
 
     nodes = {n.id: n for n in graph.nodes}
+    extra = frozenset(optional)
     left: dict[str, int] = {}
     for n in graph.nodes:
         left[n.room_type or n.id] = left.get(n.room_type or n.id, 0) + 1
@@ -600,7 +608,7 @@ def leave_out(
         kind = node.room_type or room
         if (
             room == graph.hub.id or node.is_core or room not in parent
-            or room_design(node.room_type).circulation or left[kind] < 2
+            or room_design(node.room_type).circulation or (left[kind] < 2 and room not in extra)
             or any(r in dropped or r in kept for r in subtree(room))
         ):
             continue
@@ -707,6 +715,44 @@ def solve_building_floor(
             or found[1] + sum(misshapen(other.layout.rooms)) < left[1] + sum(misshapen(floor.layout.rooms))
         ):
             floor, left = other, found
+    if LEAVE_OPTIONAL and left != (0, 0):
+        floor = _without_optional(program, index, graph, below, seed, quick, seed_planner, description,
+                                  drop_widths, floor, left)
+    return floor
+
+
+def _without_optional(
+    program: BuildingProgram, index: int, graph: RoomGraph, below: Floor | None, seed: int,
+    quick: dict[str, Any], seed_planner: SeedPlanner | None, description: str | None, drop_widths: bool,
+    floor: Floor, left: tuple[int, int],
+) -> Floor:
+    """``floor``, or the floor laid out again whole without the optional rooms of its template
+    that its relayouts still leave below their minimums (:data:`LEAVE_OPTIONAL`) where that leaves
+    fewer rooms bad, as a relayout is kept; each room left out recorded."""
+    kind = program.building_type
+    asked = _asked(program)
+    optional = _optional_rooms(program, index, graph, asked)
+    bad = {
+        **dict.fromkeys(narrow_rooms(floor.layout.rooms, kind), NARROW_WHY),
+        **unfit_rooms(floor.layout.rooms, floor.graph),
+    }
+    spare = {room: why for room, why in bad.items() if room in optional}
+    fewer, notes = leave_out(graph, spare, keep=asked, optional=optional) if spare else (graph, [])
+    if not notes:
+        return floor
+    try:
+        other, _ = _solve_building_floor(
+            program, index, fewer, below, derived_seed(seed, "optional", index), quick,
+            seed_planner, description, drop_widths, start=floor.attempts - 1 if RELAYOUT_FROM_RUNG else 0,
+        )
+    except InfeasibleLayoutError:
+        return floor
+    found = _bad_counts(other.layout, other.graph, kind)
+    if found < left and (
+        not RELAYOUT_SHAPES
+        or found[1] + sum(misshapen(other.layout.rooms)) < left[1] + sum(misshapen(floor.layout.rooms))
+    ):
+        return other.model_copy(update={"relaxations": [*notes, *other.relaxations]})
     return floor
 
 
