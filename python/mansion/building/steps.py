@@ -710,10 +710,7 @@ def solve_building_floor(
         except InfeasibleLayoutError:
             continue
         found = _bad_counts(other.layout, other.graph, program.building_type)
-        if found < left and (
-            not RELAYOUT_SHAPES
-            or found[1] + sum(misshapen(other.layout.rooms)) < left[1] + sum(misshapen(floor.layout.rooms))
-        ):
+        if _better_relayout(other, found, floor, left):
             floor, left = other, found
     if LEAVE_OPTIONAL and left != (0, 0):
         floor = _without_optional(program, index, graph, below, seed, quick, seed_planner, description,
@@ -747,13 +744,19 @@ def _without_optional(
         )
     except InfeasibleLayoutError:
         return floor
-    found = _bad_counts(other.layout, other.graph, kind)
-    if found < left and (
-        not RELAYOUT_SHAPES
-        or found[1] + sum(misshapen(other.layout.rooms)) < left[1] + sum(misshapen(floor.layout.rooms))
-    ):
+    if _better_relayout(other, _bad_counts(other.layout, other.graph, kind), floor, left):
         return other.model_copy(update={"relaxations": [*notes, *other.relaxations]})
     return floor
+
+
+def _better_relayout(other: Floor, found: tuple[int, int], floor: Floor, left: tuple[int, int]) -> bool:
+    """Whether a floor laid out again (``other``, its :func:`_bad_counts` ``found``) replaces
+    ``floor`` (``left``): fewer rooms bad, and with :data:`RELAYOUT_SHAPES` fewer rooms bad,
+    elongated or slivers in all."""
+    return found < left and (
+        not RELAYOUT_SHAPES
+        or found[1] + sum(misshapen(other.layout.rooms)) < left[1] + sum(misshapen(floor.layout.rooms))
+    )
 
 
 #: Whether a relayout is kept only when it also leaves fewer rooms below their area or width,
