@@ -735,6 +735,25 @@ def test_the_choice_prefers_a_layout_the_others_share_to_an_outlier() -> None:
     assert min(range(4), key=lambda k: solved[k][0]) == 2
 
 
+def test_relayouts_do_not_count_in_the_agreement() -> None:
+    from mansion.eval.text_placement import _ranking
+
+    a = np.zeros((8, 8), dtype=int)
+    a[:, :4], a[:, 4:] = 1, 2
+    near = a.copy()
+    near[0, 3] = 2
+    outlier = a.T.copy()
+    # two seed sets read from the text lay the rooms out alike, a third otherwise; that third
+    # layout, laid out again three times the same, would outvote them if its copies counted
+    solved = [(1.0, {}, a, None), (1.0, {}, near, None), (1.0, {}, outlier, None)]
+    solved += [(1.0, {}, outlier.copy(), None) for _ in range(3)]
+    assert _ranking(solved, {})[0] >= 2
+    assert _ranking(solved, {}, 3)[0] in (0, 1)
+    # a relayout is judged by its agreement with the seed sets' layouts
+    solved.append((0.9, {}, a.copy(), None))
+    assert _ranking(solved, {}, 3)[0] == 6
+
+
 def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
     from mansion.eval.text_placement import _agreement
 

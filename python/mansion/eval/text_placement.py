@@ -231,8 +231,10 @@ def solve_from_text(
     # out again and their sources' rooms give the same seeds and are skipped); the layouts'
     # agreements are kept for the next ranking of the same, longer list
     agreements: dict[tuple[int, int], float] = {}
+    # the layouts of the seed sets read from the text, which the relayouts' agreement is judged by
+    independent = len(solved)
     for count in (REFINE, REFINE_AGAIN):
-        for j in _ranking(solved, agreements)[:count]:
+        for j in _ranking(solved, agreements, independent)[:count]:
             again = _room_seeds(solved[j][3].grid)
             if again is None or again in tried:
                 continue
@@ -245,7 +247,7 @@ def solve_from_text(
                 score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
                 solved.append((score, again, pred, layout))
                 offsets.append(k)
-    best = _ranking(solved, agreements)[0]
+    best = _ranking(solved, agreements, independent)[0]
     return solved[best][1], solved[best][2], solved[best][3]
 
 
@@ -283,12 +285,18 @@ def _ring_fallback(
     return None
 
 
-def _ranking(solved: list[tuple[float, Any, Any, Any]], agreements: dict[tuple[int, int], float]) -> list[int]:
+def _ranking(
+    solved: list[tuple[float, Any, Any, Any]], agreements: dict[tuple[int, int], float], independent: int | None = None
+) -> list[int]:
     """Indices of ``solved`` (score, seeds, prediction, layout), best first: the least
-    disagreement with the text, less :data:`CONSENSUS` times the agreement with the others.
+    disagreement with the text, less :data:`CONSENSUS` times the agreement with the others, the
+    first ``independent`` of them (the layouts of the seed sets read from the text; all when
+    None): the relayouts are not judged by each other's agreement nor weigh in on anyone's, since
+    they are copies of the layouts ranked best and would count those layouts' agreement again.
     ``agreements`` keeps each pair's agreement for the next ranking of the same, longer list."""
     preds = [s[2] for s in solved]
-    key = [solved[k][0] - CONSENSUS * _agreement(k, preds, agreements) for k in range(len(solved))]
+    among = len(solved) if independent is None else independent
+    key = [solved[k][0] - CONSENSUS * _agreement(k, preds, agreements, among) for k in range(len(solved))]
     return sorted(range(len(solved)), key=lambda k: (key[k], k))
 
 
@@ -390,16 +398,18 @@ REFINE_GROWN = 2
 CONSENSUS = 3.0
 
 
-def _agreement(k: int, preds: list[Any], memo: dict[tuple[int, int], float] | None = None) -> float:
-    """Mean micro-IoU of layout ``k``'s class map with every other candidate's (0 when alone).
-    Compares candidate layouts with each other only; no ground truth is involved. The IoU of two
-    maps is the same either way round, so ``memo`` (pair of indices, lower first → IoU) lets each
-    pair be compared once."""
+def _agreement(
+    k: int, preds: list[Any], memo: dict[tuple[int, int], float] | None = None, among: int | None = None
+) -> float:
+    """Mean micro-IoU of layout ``k``'s class map with every other candidate's among the first
+    ``among`` (all when None; 0 when there is no other). Compares candidate layouts with each
+    other only; no ground truth is involved. The IoU of two maps is the same either way round, so
+    ``memo`` (pair of indices, lower first → IoU) lets each pair be compared once."""
     from mansion.eval.iou import plan_iou
 
     memo = {} if memo is None else memo
     others = []
-    for j, q in enumerate(preds):
+    for j, q in enumerate(preds[:among]):
         if j == k:
             continue
         pair = (min(j, k), max(j, k))
