@@ -685,9 +685,9 @@ def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: p
 def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytest.MonkeyPatch) -> None:
     from mansion.eval import text_placement
     from mansion.eval.t2d import T2DPlan, node_id
-    from mansion.eval.text_placement import REFINE, REFINE_AGAIN, _room_seeds, solve_from_text
+    from mansion.eval.text_placement import AGAIN_ROUNDS, REFINE, REFINE_AGAIN, _room_seeds, solve_from_text
 
-    assert REFINE_AGAIN >= 1 and REFINE > REFINE_AGAIN
+    assert REFINE_AGAIN >= 1 and REFINE > REFINE_AGAIN and AGAIN_ROUNDS >= 1
     plan = T2DPlan.model_validate(make_plan(2))
     ids = [node_id(r) for r in plan.rooms]
     solved: list[dict] = []
@@ -708,13 +708,16 @@ def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytes
     monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: -float(len(solved)))
     monkeypatch.setattr(text_placement, "REFINE", 2)
     monkeypatch.setattr(text_placement, "REFINE_AGAIN", 1)
+    monkeypatch.setattr(text_placement, "AGAIN_ROUNDS", 2)
     chosen, _, layout = solve_from_text(plan, "The kitchen is in the north.", solve)
-    read = len(solved) - 3
+    read = len(solved) - 4
     assert read >= 2
     # the first round lays out the two ranked best (the last two read) again; the second the best
-    # of all, the last relayout, whose rooms give new seeds
+    # of all, the last relayout, whose rooms give new seeds; the third the best of all again, the
+    # second round's relayout
     assert solved[read:read + 2] == [_room_seeds(layouts[read - 1].grid), _room_seeds(layouts[read - 2].grid)]
-    assert solved[-1] == _room_seeds(layouts[read + 1].grid)
+    assert solved[read + 2] == _room_seeds(layouts[read + 1].grid)
+    assert solved[read + 3] == _room_seeds(layouts[read + 2].grid)
     assert chosen == solved[-1] and layout is layouts[-1]
 
 
