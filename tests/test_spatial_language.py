@@ -721,14 +721,19 @@ def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytes
     assert chosen == solved[-1] and layout is layouts[-1]
 
 
-def test_the_choice_prefers_a_layout_the_others_share_to_an_outlier() -> None:
-    from mansion.eval.text_placement import CONSENSUS, _ranking
-
+def _two_layouts_and_an_outlier() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Two class maps that share all but one cell, and a third laid out the other way round."""
     a = np.zeros((8, 8), dtype=int)
     a[:, :4], a[:, 4:] = 1, 2
     near = a.copy()
     near[0, 3] = 2
-    outlier = a.T.copy()
+    return a, near, a.T.copy()
+
+
+def test_the_choice_prefers_a_layout_the_others_share_to_an_outlier() -> None:
+    from mansion.eval.text_placement import CONSENSUS, _ranking
+
+    a, near, outlier = _two_layouts_and_an_outlier()
     # the outlier agrees with the text a little better; three layouts share nearly all their cells
     preds = [a, near, outlier, a.copy()]
     solved = [(1.0, {}, preds[0], None), (1.0, {}, preds[1], None), (1.0 - CONSENSUS / 10, {}, preds[2], None), (1.0, {}, preds[3], None)]
@@ -741,11 +746,7 @@ def test_the_choice_prefers_a_layout_the_others_share_to_an_outlier() -> None:
 def test_relayouts_do_not_count_in_the_agreement() -> None:
     from mansion.eval.text_placement import _ranking
 
-    a = np.zeros((8, 8), dtype=int)
-    a[:, :4], a[:, 4:] = 1, 2
-    near = a.copy()
-    near[0, 3] = 2
-    outlier = a.T.copy()
+    a, near, outlier = _two_layouts_and_an_outlier()
     # two seed sets read from the text lay the rooms out alike, a third otherwise; that third
     # layout, laid out again three times the same, would outvote them if its copies counted
     solved = [(1.0, {}, a, None), (1.0, {}, near, None), (1.0, {}, outlier, None)]
