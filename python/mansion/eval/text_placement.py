@@ -13,8 +13,8 @@ adjacency met, no contact the adjacency does not pair, rooms filling their boxes
 and depths in proportion) and that shares most with the seed sets' layouts
 (:data:`CONSENSUS`; the relayouts below are judged by it but do not count in it) is kept, after
 the :data:`REFINE` best are laid out again from seeds at their own rooms, and the
-:data:`REFINE_AGAIN` best of all those once more, :data:`AGAIN_ROUNDS` times. The solve is the caller's;
-``mansion eval floorplan --planner text`` runs it under :data:`TEXT_ENERGY`. A seed set the
+:data:`REFINE_AGAIN` best of all those once more, :data:`AGAIN_ROUNDS` times. The solve is the
+caller's; ``mansion eval floorplan --planner text`` runs it under :data:`TEXT_ENERGY`. A seed set the
 solver cannot lay out is skipped; only when none can is the plan a failure.
 """
 
