@@ -381,7 +381,9 @@ REFINE_AGAIN = 8
 #: dev plans cached, the new solves made: odd ids 68.20 / 65.35 → 68.36 / 65.50, even 72.53 /
 #: 69.24 → 72.90 / 69.62, about 2 solves more a plan; a fourth: 68.39 / 65.51 and 73.00 / 69.72
 #: for 1 more; :data:`REFINE` 24 with one round of 8: 68.38 / 65.43 and 72.80 / 69.53 for 11 more).
-AGAIN_ROUNDS = 2
+#: 2 → 4, each round from the ranking after the one before: odd 68.49 / 65.56, even 73.13 / 69.84,
+#: about 1.4 solves more a plan (rounds of 12, two of them: 68.27 / 65.32 and 72.96 / 69.73).
+AGAIN_ROUNDS = 4
 
 #: The offset of the solver's random seed (a kind of :data:`SOLVE_KINDS`: the shaped energy, the
 #: longest-side growth) each of the :data:`REFINE` layouts ranked best is laid out under as well,
