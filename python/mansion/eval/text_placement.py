@@ -382,7 +382,8 @@ REFINE_AGAIN = 8
 #: 69.24 → 72.90 / 69.62, about 2 solves more a plan; a fourth: 68.39 / 65.51 and 73.00 / 69.72
 #: for 1 more; :data:`REFINE` 24 with one round of 8: 68.38 / 65.43 and 72.80 / 69.53 for 11 more).
 #: 2 → 4, each round from the ranking after the one before: odd 68.49 / 65.56, even 73.13 / 69.84,
-#: about 1.4 solves more a plan (rounds of 12, two of them: 68.27 / 65.32 and 72.96 / 69.73).
+#: about 1.4 solves more a plan (rounds of 12, two of them: 68.27 / 65.32 and 72.96 / 69.73;
+#: eight rounds of 8: 68.52 / 65.60 and 73.20 / 69.91).
 AGAIN_ROUNDS = 4
 
 #: The offset of the solver's random seed (a kind of :data:`SOLVE_KINDS`: the shaped energy, the
