@@ -685,9 +685,9 @@ def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: p
 def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytest.MonkeyPatch) -> None:
     from mansion.eval import text_placement
     from mansion.eval.t2d import T2DPlan, node_id
-    from mansion.eval.text_placement import REFINE, REFINE_AGAIN, _room_seeds, solve_from_text
+    from mansion.eval.text_placement import AGAIN_ROUNDS, REFINE, REFINE_AGAIN, _room_seeds, solve_from_text
 
-    assert REFINE_AGAIN >= 1 and REFINE > REFINE_AGAIN
+    assert REFINE_AGAIN >= 1 and REFINE > REFINE_AGAIN and AGAIN_ROUNDS >= 1
     plan = T2DPlan.model_validate(make_plan(2))
     ids = [node_id(r) for r in plan.rooms]
     solved: list[dict] = []
@@ -708,24 +708,32 @@ def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytes
     monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: -float(len(solved)))
     monkeypatch.setattr(text_placement, "REFINE", 2)
     monkeypatch.setattr(text_placement, "REFINE_AGAIN", 1)
+    monkeypatch.setattr(text_placement, "AGAIN_ROUNDS", 2)
     chosen, _, layout = solve_from_text(plan, "The kitchen is in the north.", solve)
-    read = len(solved) - 3
+    read = len(solved) - 4
     assert read >= 2
     # the first round lays out the two ranked best (the last two read) again; the second the best
-    # of all, the last relayout, whose rooms give new seeds
+    # of all, the last relayout, whose rooms give new seeds; the third the best of all again, the
+    # second round's relayout
     assert solved[read:read + 2] == [_room_seeds(layouts[read - 1].grid), _room_seeds(layouts[read - 2].grid)]
-    assert solved[-1] == _room_seeds(layouts[read + 1].grid)
+    assert solved[read + 2] == _room_seeds(layouts[read + 1].grid)
+    assert solved[read + 3] == _room_seeds(layouts[read + 2].grid)
     assert chosen == solved[-1] and layout is layouts[-1]
+
+
+def _two_layouts_and_an_outlier() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Two class maps that share all but one cell, and a third laid out the other way round."""
+    a = np.zeros((8, 8), dtype=int)
+    a[:, :4], a[:, 4:] = 1, 2
+    near = a.copy()
+    near[0, 3] = 2
+    return a, near, a.T.copy()
 
 
 def test_the_choice_prefers_a_layout_the_others_share_to_an_outlier() -> None:
     from mansion.eval.text_placement import CONSENSUS, _ranking
 
-    a = np.zeros((8, 8), dtype=int)
-    a[:, :4], a[:, 4:] = 1, 2
-    near = a.copy()
-    near[0, 3] = 2
-    outlier = a.T.copy()
+    a, near, outlier = _two_layouts_and_an_outlier()
     # the outlier agrees with the text a little better; three layouts share nearly all their cells
     preds = [a, near, outlier, a.copy()]
     solved = [(1.0, {}, preds[0], None), (1.0, {}, preds[1], None), (1.0 - CONSENSUS / 10, {}, preds[2], None), (1.0, {}, preds[3], None)]
@@ -733,6 +741,21 @@ def test_the_choice_prefers_a_layout_the_others_share_to_an_outlier() -> None:
     assert order[-1] == 2 and order[0] in (0, 3)
     # with the text alone the outlier would be first
     assert min(range(4), key=lambda k: solved[k][0]) == 2
+
+
+def test_relayouts_do_not_count_in_the_agreement() -> None:
+    from mansion.eval.text_placement import _ranking
+
+    a, near, outlier = _two_layouts_and_an_outlier()
+    # two seed sets read from the text lay the rooms out alike, a third otherwise; that third
+    # layout, laid out again three times the same, would outvote them if its copies counted
+    solved = [(1.0, {}, a, None), (1.0, {}, near, None), (1.0, {}, outlier, None)]
+    solved += [(1.0, {}, outlier.copy(), None) for _ in range(3)]
+    assert _ranking(solved, {})[0] >= 2
+    assert _ranking(solved, {}, 3)[0] in (0, 1)
+    # a relayout is judged by its agreement with the seed sets' layouts
+    solved.append((0.9, {}, a.copy(), None))
+    assert _ranking(solved, {}, 3)[0] == 6
 
 
 def test_layouts_shared_by_the_other_seed_sets_agree_most() -> None:
