@@ -1136,7 +1136,7 @@ def _mended_floor(
 def _optional_rooms(program: BuildingProgram, index: int, graph: RoomGraph, asked: set[str]) -> frozenset[str]:
     """The rooms of floor ``index`` whose type its template plans only where it fits (a school's
     art room, a kindergarten's staff office) and that the description did not ask for: the last
-    steps may spare them though they are the last of their type (:data:`SPARE_OPTIONAL`). None
+    steps may spare them though they are the last of their type (:data:`SPARE_OPTIONAL`); none
     where the building type has no template (a planner's own type)."""
     try:
         template = floor_template(program.building_type, index, program.floor_count)
