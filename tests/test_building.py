@@ -906,3 +906,28 @@ def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_ag
     # no relayout asked, no floor laid out again without it
     fastest = generate_building(description, building_type=kind, floors=floors, seed=77, relayouts=0).floors[9]
     assert "art_room" in {r.id for r in fastest.layout.rooms}
+
+
+def test_a_small_floor_is_laid_out_again_more_times_than_asked() -> None:
+    """Townhouse 86 of the realism hundred lays its ground floor's living room, the hub, out as an
+    L 2.5 m wide round the stair (a living room asks 3 m), and one relayout does no better. A
+    floor of at most ``steps.SMALL_FLOOR_AREA`` m² is laid out in a fraction of a hospital floor's
+    time, so it gets ``steps.SMALL_FLOOR_RELAYOUTS`` more whenever relayouts are asked: the
+    living room comes out at its width, every room kept; none with ``relayouts=0``."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(86)
+    fastest = generate_building(description, building_type=kind, floors=floors, seed=86, relayouts=0).floors[0]
+    ground = Polygon(fastest.footprint.polygon, fastest.footprint.holes)
+    assert ground.area <= steps.SMALL_FLOOR_AREA and steps.SMALL_FLOOR_RELAYOUTS >= 1
+    assert steps.narrow_rooms(fastest.layout.rooms, kind) == {"living_room"}  # none laid out again
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "SMALL_FLOOR_RELAYOUTS", 0)
+        once = generate_building(description, building_type=kind, floors=floors, seed=86).floors[0]
+    assert steps.narrow_rooms(once.layout.rooms, kind) == {"living_room"}
+    more = generate_building(description, building_type=kind, floors=floors, seed=86).floors[0]
+    assert steps.narrow_rooms(more.layout.rooms, kind) == set()
+    assert not steps.unfit_rooms(more.layout.rooms, more.graph)
+    assert {r.id for r in more.layout.rooms} == {r.id for r in once.layout.rooms}
+    assert sum(steps.misshapen(more.layout.rooms)) <= sum(steps.misshapen(once.layout.rooms))

@@ -60,6 +60,7 @@ import math
 from collections.abc import Callable, Iterable
 from typing import Any
 
+from shapely.geometry import Polygon
 
 from mansion.building.banks import bank_graph, bank_layout
 from mansion.building.checks import check_building
@@ -699,7 +700,9 @@ def solve_building_floor(
         return floor
     left = _bad_counts(floor.layout, floor.graph, program.building_type)
     quick = _relayout_options(solver)
-    for k in range(relayouts):
+    free = Polygon(floor.footprint.polygon, floor.footprint.holes).area
+    more = SMALL_FLOOR_RELAYOUTS if free <= SMALL_FLOOR_AREA + 1e-9 else 0
+    for k in range(relayouts + more):
         if left == (0, 0):
             break
         try:
@@ -758,6 +761,13 @@ def _better_relayout(other: Floor, found: tuple[int, int], floor: Floor, left: t
         or found[1] + sum(misshapen(other.layout.rooms)) < left[1] + sum(misshapen(floor.layout.rooms))
     )
 
+
+#: Relayouts more than asked (``relayouts`` of :func:`solve_building_floor`, when it asks for any)
+#: for a floor of at most :data:`SMALL_FLOOR_AREA` m² of free area: a townhouse's floor is laid
+#: out in a fraction of the time of a hospital's, and its living room, the hub, wraps round the
+#: stair under one seed where another seed lays it out square.
+SMALL_FLOOR_RELAYOUTS = 3
+SMALL_FLOOR_AREA = 120.0
 
 #: Whether a relayout is kept only when it also leaves fewer rooms below their area or width,
 #: elongated or slivers (:func:`misshapen`) in all than the layout it replaces: not one that
