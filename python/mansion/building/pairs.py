@@ -192,11 +192,11 @@ def _best_pair(
     other: str,
     building_type: str | None,
     min_contact: float,
-    tried_most: int | None = MAX_PAIR_TRIED,
+    tried: int | None = MAX_PAIR_TRIED,
     clean: bool = False,
 ) -> FloorLayout | None:
     """The layout with ``room`` and ``other`` cut again by the best split of their cells, or
-    None when no split passes the module's rules; at most ``tried_most`` splits judged in full
+    None when no split passes the module's rules; at most ``tried`` splits judged in full
     (None: all); ``clean``: ``other`` with no defect at all after."""
     grid = layout.grid
     labels = grid.array()
@@ -250,7 +250,7 @@ def _best_pair(
     other_passable = _passable(theirs)
     held = held_walls(ids, _kept_walls(layout, graph, {room, other}), room, other)
     seen: set[bytes] = set()
-    tried = 0
+    judged = 0
     for i in order:
         way, k1, k2 = parts[i % len(parts)].tolist()
         side = _part(cells.shape, way, k1, k2)
@@ -259,8 +259,8 @@ def _best_pair(
         if key in seen:
             continue  # the same cells from another cut
         seen.add(key)
-        tried += 1
-        if tried_most is not None and tried > tried_most:
+        judged += 1
+        if tried is not None and judged > tried:
             break
         if not sound[i]:
             continue  # a side below its width by the counts above

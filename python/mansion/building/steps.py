@@ -60,8 +60,6 @@ import math
 from collections.abc import Callable, Iterable
 from typing import Any
 
-from shapely.geometry import Polygon
-
 from mansion.building.banks import bank_graph, bank_layout
 from mansion.building.checks import check_building
 from mansion.building.load_bearing import (
@@ -700,8 +698,7 @@ def solve_building_floor(
         return floor
     left = _bad_counts(floor.layout, floor.graph, program.building_type)
     quick = _relayout_options(solver)
-    free = Polygon(floor.footprint.polygon, floor.footprint.holes).area
-    more = SMALL_FLOOR_RELAYOUTS if free <= SMALL_FLOOR_AREA + 1e-9 else 0
+    more = SMALL_FLOOR_RELAYOUTS if floor.footprint.area <= SMALL_FLOOR_AREA + 1e-9 else 0
     for k in range(relayouts + more):
         if left == (0, 0):
             break
@@ -732,10 +729,7 @@ def _without_optional(
     kind = program.building_type
     asked = _asked(program)
     optional = _optional_rooms(program, index, graph, asked)
-    bad = {
-        **dict.fromkeys(narrow_rooms(floor.layout.rooms, kind), NARROW_WHY),
-        **unfit_rooms(floor.layout.rooms, floor.graph),
-    }
+    bad = _bad_rooms(floor.layout, floor.graph, kind)
     spare = {room: why for room, why in bad.items() if room in optional}
     fewer, notes = leave_out(graph, spare, keep=asked, optional=optional) if spare else (graph, [])
     if not notes:
@@ -763,7 +757,8 @@ def _better_relayout(other: Floor, found: tuple[int, int], floor: Floor, left: t
 
 
 #: Relayouts more than asked (``relayouts`` of :func:`solve_building_floor`, when it asks for any)
-#: for a floor of at most :data:`SMALL_FLOOR_AREA` m² of free area: a townhouse's floor is laid
+#: for a floor of at most :data:`SMALL_FLOOR_AREA` m² (``Footprint.area``: its outline less its
+#: courtyards, cores included): a townhouse's floor is laid
 #: out in a fraction of the time of a hospital's, and its living room, the hub, wraps round the
 #: stair under one seed where another seed lays it out square.
 SMALL_FLOOR_RELAYOUTS = 3
@@ -778,6 +773,15 @@ RELAYOUT_SHAPES = True
 #: Whether a relayout climbs the ladder of attempts from the rung that laid the floor out (else
 #: from the first): the rungs below it failed that floor under its own seed.
 RELAYOUT_FROM_RUNG = True
+
+
+def _bad_rooms(layout: FloorLayout, graph: RoomGraph, building_type: str | None) -> dict[str, str]:
+    """The rooms of ``layout`` below their clear width, minimum area or without a usable square
+    (id -> why; a room both narrow and too small says it is too small)."""
+    return {
+        **dict.fromkeys(narrow_rooms(layout.rooms, building_type), NARROW_WHY),
+        **unfit_rooms(layout.rooms, graph),
+    }
 
 
 def _bad_counts(layout: FloorLayout, graph: RoomGraph, building_type: str | None) -> tuple[int, int]:
@@ -1107,18 +1111,17 @@ def _mended_floor(
         layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
         same_region=program.load_bearing_walls,
     )
+    # the rooms the last steps may spare though the last of their type (the dissolve only
+    # removes rooms, so the set read before it serves the stores after it too)
+    optional = _optional_rooms(program, index, graph, asked) if SPARE_OPTIONAL else frozenset()
     if DISSOLVE:
         # last, a room no mend brought to its width or minimum area is left out where the
         # program can spare it, its floor shared by the rooms beside it
         # (mansion.building.dissolve)
-        still = {
-            **dict.fromkeys(narrow_rooms(layout.rooms, program.building_type), NARROW_WHY),
-            **unfit_rooms(layout.rooms, graph),
-        }
         layout, graph, dissolved = dissolve_unfit_rooms(
-            layout, graph, still, program.building_type, keep=asked,
-            min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
-            optional=_optional_rooms(program, index, graph, asked) if SPARE_OPTIONAL else (),
+            layout, graph, _bad_rooms(layout, graph, program.building_type), program.building_type,
+            keep=asked, min_contact=solver.get("min_contact", 1.0), same_region=program.load_bearing_walls,
+            optional=optional,
         )
         mended += dissolved
     if LAST_PAIRS:
@@ -1131,19 +1134,17 @@ def _mended_floor(
     if SPARE_STORES:
         # and a room the program can spare that is still below its minimums, which no room
         # beside it may take, made a store where it is a sound one (mansion.building.stores)
-        still = {
-            **dict.fromkeys(narrow_rooms(layout.rooms, program.building_type), NARROW_WHY),
-            **unfit_rooms(layout.rooms, graph),
-        }
         layout, graph, stored = store_spare_rooms(
-            layout, graph, still, program.building_type, keep=asked,
-            optional=_optional_rooms(program, index, graph, asked) if SPARE_OPTIONAL else frozenset(),
+            layout, graph, _bad_rooms(layout, graph, program.building_type), program.building_type,
+            keep=asked, optional=optional,
         )
         mended += stored
     return layout, graph, mended
 
 
-def _optional_rooms(program: BuildingProgram, index: int, graph: RoomGraph, asked: set[str]) -> frozenset[str]:
+def _optional_rooms(
+    program: BuildingProgram, index: int, graph: RoomGraph, asked: set[str],
+) -> frozenset[str]:
     """The rooms of floor ``index`` whose type its template plans only where it fits (a school's
     art room, a kindergarten's staff office) and that the description did not ask for: the last
     steps may spare them though they are the last of their type (:data:`SPARE_OPTIONAL`); none
