@@ -9,13 +9,14 @@ import sys
 from collections import Counter
 from pathlib import Path
 
+import numpy as np
 import pytest
 from shapely.geometry import Polygon, box
 
 from mansion.building import check_building, generate_building
 from mansion.building.load_bearing import first_round_walls
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError, PlannerError
-from mansion.models.building import Building, FloorCopy
+from mansion.models.building import Building, Floor, FloorCopy
 from mansion.models.layout import LayoutRoom
 from mansion.planning import parse_description
 
@@ -846,7 +847,6 @@ def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_
     judges every split of what the mends and the dissolve leave below its width, the room beside
     coming out with no defect at all; nothing of the program changes."""
     from mansion.building import steps
-    from mansion.building.merge import shape_defects
     from mansion.building.pairs import recut_pairs
     from mansion.eval.realism import bench_case
     from mansion.models.room_design import room_design
@@ -866,21 +866,76 @@ def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_
     assert steps.narrow_rooms(every.rooms, kind) == set()
 
     after = generate_building(description, building_type=kind, floors=floors, seed=75)
-    mended = after.floors[5]
+    mended = _mended_keeping_the_program(floor, after, 5, "board_room")
+    for r in mended.layout.rooms:
+        assert r.is_core or r.area + 1e-6 >= room_design(r.room_type).min_area
+
+
+def _mended_keeping_the_program(floor: Floor, after: Building, index: int, room: str) -> Floor:
+    """Floor ``index`` of ``after``, checked to be ``floor`` (where ``room`` is below its width)
+    with that room mended and nothing of the program changed: no room below its width, the same
+    rooms and relaxations, a sound building, and no room gaining a defect (a toilet 5 m by 1.5 m
+    stays as elongated as it was)."""
+    from mansion.building import steps
+    from mansion.building.merge import shape_defects
+
+    kind = after.program.building_type
+    mended = after.floors[index]
     assert steps.narrow_rooms(mended.layout.rooms, kind) == set()
     assert [r.id for r in mended.layout.rooms] == [r.id for r in floor.layout.rooms]
     assert mended.relaxations == floor.relaxations
     check_building(after)
 
-    def defects(room: LayoutRoom) -> set[str]:
-        return shape_defects(Polygon(room.polygon, room.holes), room.room_type, kind)
+    def defects(r: LayoutRoom) -> set[str]:
+        return shape_defects(Polygon(r.polygon, r.holes), r.room_type, kind)
 
     had = {r.id: defects(r) for r in floor.layout.rooms}
-    assert had["board_room"] == {"narrow"}
+    assert "narrow" in had[room]
     for r in mended.layout.rooms:
-        # no room gains a defect (a toilet 5 m by 1.5 m stays as elongated as it was)
         assert defects(r) <= had[r.id] - {"narrow"}
-        assert r.is_core or r.area + 1e-6 >= room_design(r.room_type).min_area
+    return mended
+
+
+def test_a_room_below_its_width_with_rooms_cut_from_it_is_laid_out_again_with_them() -> None:
+    """The office of the realism hundred's seed 61 lays floor 1's open-office bay out round the
+    private office, print room and phone booth cut from it, with arms 2 m wide (an open office
+    asks 4 m), after it took a meeting room's floor in the dissolve. The lobby form of a cluster's
+    relayout (the head a strip of its own clear width) finds nothing: the bay needs the region's
+    depth. ``steps.LATE_CLUSTERS`` lays the bay out again with its rooms, its strip as deep as it
+    takes and the rooms in a row along one end, each at least its clear width across the row;
+    nothing of the program changes and no room gains a defect."""
+    from mansion.building import recut, steps
+    from mansion.building.load_bearing import cut_parents
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(61)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "LATE_CLUSTERS", False)
+        before = generate_building(description, building_type=kind, floors=floors, seed=61)
+    floor = before.floors[1]
+    assert steps.narrow_rooms(floor.layout.rooms, kind) == {"bay_1"}
+    parent = cut_parents(floor.graph)
+    members = sorted(r for r, up in parent.items() if up == "bay_1")
+    assert members == ["phone_booth_1", "print_room_1", "private_office_2"]
+    # the lobby form finds nothing; as deep as it takes, the bay comes out at its width
+    assert recut._cluster(floor.layout, floor.graph, "bay_1", parent, kind, 1.0) is None
+    relaid = recut.relay_narrow_clusters(floor.layout, floor.graph, kind)
+    assert steps.narrow_rooms(relaid.rooms, kind) == set()
+
+    after = generate_building(description, building_type=kind, floors=floors, seed=61)
+    mended = _mended_keeping_the_program(floor, after, 1, "bay_1")
+    # the rooms cut from the bay still open onto it, and it is a rectangle now
+    beside = {frozenset((a.a, a.b)) for a in mended.layout.adjacencies if a.contact >= 1.0 - 1e-6}
+    assert all(frozenset(("bay_1", m)) in beside for m in members)
+    bay = mended.layout.room("bay_1")
+    assert Polygon(bay.polygon).area == pytest.approx(Polygon(bay.polygon).envelope.area)
+    # the cells the bay and its rooms hold are the same: no other room gives or takes
+    grid_before, grid_after = floor.layout.grid.array(), mended.layout.grid.array()
+    ids_b, ids_a = list(floor.layout.grid.ids), list(mended.layout.grid.ids)
+    cluster = ["bay_1", *members]
+    region_b = np.isin(grid_before, [ids_b.index(r) for r in cluster])
+    region_a = np.isin(grid_after, [ids_a.index(r) for r in cluster])
+    assert (region_b == region_a).all()
 
 
 def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_again_without_it() -> None:

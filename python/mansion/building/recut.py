@@ -166,8 +166,9 @@ def recut_narrow_rooms(
     whose arm is narrower than a ward, a classroom notched by a corridor) cut again as a
     rectangle of about its area in the region it shares with the room it was cut from, a sibling
     or another room beside it, under the rules of a recut; a room with the one room cut from it
-    (a ward and its ensuite) together with it as a suite; rooms with several rooms cut from them,
-    circulation and cores are left. The rectangle that keeps most of the room's cells wins.
+    (a ward and its ensuite) together with it as a suite; a room with several rooms cut from it
+    laid out again with them, its strip as deep as it takes (:data:`DEEP_CLUSTERS`); circulation
+    and cores are left. The rectangle that keeps most of the room's cells wins.
     Nothing of the program changes, so nothing is recorded."""
     parent = cut_parents(graph)
     group = first_round_groups(graph) if same_region else None
@@ -186,17 +187,44 @@ def recut_narrow_rooms(
         ):
             continue
         own = children.get(room, [])
+        if len(own) > 1:
+            # a room with several rooms cut from it (an office bay's open office with a private
+            # office, a print room and a phone booth) laid out again with them, its rooms in a
+            # row along one end (DEEP_CLUSTERS)
+            if DEEP_CLUSTERS:
+                found = _cluster(layout, graph, room, parent, building_type, min_contact, deep=True)
+                if found is not None:
+                    layout = found[0]
+            continue
         if own and (
-            len(own) > 1 or own[0] in has_children or own[0] not in rooms or nodes[own[0]].is_core
+            own[0] in has_children or own[0] not in rooms or nodes[own[0]].is_core
             or room_design(rooms[own[0]].room_type).circulation
         ):
-            continue  # a room with several rooms cut from it (a flat's living bay) keeps its shape
+            continue
         best = _best_over_donors(
             layout, graph, room, up, parent, nodes, group, building_type, min_contact, narrow=True,
             inner=own[0] if own else None,
         )
         if best is not None:
             layout = best[1]
+    return layout
+
+
+def relay_narrow_clusters(
+    layout: FloorLayout, graph: RoomGraph, building_type: str | None = None, min_contact: float = 1.0,
+) -> FloorLayout:
+    """``layout`` with each room below its clear width that has two to :data:`MAX_CLUSTER` rooms
+    cut from it laid out again with them, its strip as deep as it takes (as
+    :func:`recut_narrow_rooms` does, :data:`DEEP_CLUSTERS`): for the rooms the floor's later
+    mends left so (an office bay that took a meeting room's floor). The cluster's cells stay its
+    own, so no first-round region changes. Nothing of the program changes."""
+    parent = cut_parents(graph)
+    for room in sorted(set(parent.values())):
+        rooms = {r.id: r for r in layout.rooms}
+        if room in rooms and below_width(rooms[room], building_type):
+            found = _cluster(layout, graph, room, parent, building_type, min_contact, deep=True)
+            if found is not None:
+                layout = found[0]
     return layout
 
 
@@ -1013,6 +1041,12 @@ def _connected(mask: np.ndarray) -> bool:
 #: Rooms a cluster's head serves at most for it to be laid out again (their orders are tried).
 MAX_CLUSTER = 4
 
+#: Whether a room below its clear width with two to :data:`MAX_CLUSTER` rooms cut from it (an
+#: office bay's open office round a private office, a print room and a phone booth) is laid out
+#: again with them, the head's strip as deep as it takes (:func:`recut_narrow_rooms`,
+#: ``_relaid_cluster(..., deep=True)``).
+DEEP_CLUSTERS = True
+
 
 def _cluster(
     layout: FloorLayout,
@@ -1021,10 +1055,12 @@ def _cluster(
     parent: dict[str, str],
     building_type: str | None,
     min_contact: float,
+    deep: bool = False,
 ) -> tuple[FloorLayout, str] | None:
     """The layout with the cluster of ``head`` laid out again, and its note; None when ``head``
     is the hub, a core or no cluster's head (its rooms are two to :data:`MAX_CLUSTER`, none of
-    them with rooms of its own), or no re-layout passes."""
+    them with rooms of its own), or no re-layout passes. ``deep``: the head's strip as deep as
+    it takes (:func:`_relaid_cluster`)."""
     members = sorted(r for r, up in parent.items() if up == head)
     nodes = {n.id: n for n in graph.nodes}
     if (
@@ -1032,7 +1068,7 @@ def _cluster(
         or any(up in members for up in parent.values())
     ):
         return None
-    found = _relaid_cluster(layout, graph, head, members, building_type, min_contact)
+    found = _relaid_cluster(layout, graph, head, members, building_type, min_contact, deep)
     if found is None:
         return None
     return found[1], f"{head} laid out again with {', '.join(members)} along it"
@@ -1045,11 +1081,18 @@ def _relaid_cluster(
     members: list[str],
     building_type: str | None,
     min_contact: float,
+    deep: bool = False,
 ) -> tuple[float, FloorLayout] | None:
     """(the rooms' total miss from their planned areas in m², the layout) of the best re-layout
     of a cluster, or None when none passes: ``head`` (a toilet lobby) as a strip along one side
     of the cells it and ``members`` (the rooms cut from it) hold, the members side by side along
-    the strip in the rest, each a run of whole columns holding its share of the cells."""
+    the strip in the rest, each a run of whole columns holding its share of the cells.
+
+    ``deep``: the head's strip is tried at every depth from its clear width to all but the last
+    row (an office bay's open office, the rooms cut from it in a row along one end), and each
+    member's share is at least its clear width across the band's rows as well as its minimum
+    area (a phone booth 1.2 m wide where the band is 3 m deep), so that the band's rooms are
+    as wide as they must be rather than shares of the planned areas."""
     cluster = [head, *members]
     labels, cell, keys, region, keep, passable = cluster_cells(layout, graph, cluster)
     rooms = {r.id: r for r in layout.rooms}
@@ -1066,23 +1109,29 @@ def _relaid_cluster(
     for turn in range(4):
         view = np.rot90(region, turn)
         rows = np.nonzero(view.any(axis=1))[0]
-        strip = np.zeros_like(view)
-        strip[rows[0]:rows[0] + depth] = view[rows[0]:rows[0] + depth]
-        band = view & ~strip
-        shares = band_shares(band, members, least, targets, cell)
-        if shares is None:
-            continue
-        columns = band_columns(band)
-        for order in itertools.permutations(members):
-            turned = np.rot90(labels, turn).copy()
-            turned[strip] = keys[head]
-            if in_a_row(turned, band, order, shares, keys, cell, columns):
-                new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
-                score = judged_score(
-                    layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact,
-                )
-                if score is not None and (best is None or score < best[0] - EPS):
-                    best = (score, new)
+        for d in range(depth, rows[-1] - rows[0] + 1) if deep else (depth,):
+            strip = np.zeros_like(view)
+            strip[rows[0]:rows[0] + d] = view[rows[0]:rows[0] + d]
+            band = view & ~strip
+            floor, want = least, targets
+            if deep:
+                across = int(band.any(axis=1).sum()) * cell
+                floor = {m: max(least[m], needed_width(rooms[m].room_type, building_type) * across) for m in members}
+                want = {m: max(targets[m], floor[m]) for m in members}
+            shares = band_shares(band, members, floor, want, cell)
+            if shares is None:
+                continue
+            columns = band_columns(band)
+            for order in itertools.permutations(members):
+                turned = np.rot90(labels, turn).copy()
+                turned[strip] = keys[head]
+                if in_a_row(turned, band, order, shares, keys, cell, columns):
+                    new = np.ascontiguousarray(np.rot90(turned, -turn)).astype(np.int32)
+                    score = judged_score(
+                        layout, new, cluster, keep, before, least, targets, passable, building_type, min_contact,
+                    )
+                    if score is not None and (best is None or score < best[0] - EPS):
+                        best = (score, new)
     return None if best is None else (best[0], _redrawn(layout, best[1]))
 
 

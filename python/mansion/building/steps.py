@@ -77,7 +77,9 @@ from mansion.building.halls import hall_arms
 from mansion.building.merge import USABLE_SIDE, merge_unfit_rooms
 from mansion.building.outlines import outline, shape_measure
 from mansion.building.pairs import recut_pairs
-from mansion.building.recut import _least, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, widen_passages
+from mansion.building.recut import (
+    _least, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, relay_narrow_clusters, widen_passages,
+)
 from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.stores import store_pockets, store_spare_rooms
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError
@@ -398,6 +400,13 @@ DISSOLVE = True
 #: room of 41 m^2 whose arm is 3.5 m wide (3.6 m asked) keeps its body, 4.5 m wide, and gives the
 #: arm to the private office beside it, a split that keeps 70 % of its cells.
 LAST_PAIRS = True
+
+#: Whether, after the dissolve, a room still below its clear width with two to
+#: :data:`mansion.building.recut.MAX_CLUSTER` rooms cut from it is laid out again with them, its
+#: strip as deep as it takes (:func:`mansion.building.recut.relay_narrow_clusters`): the dissolve
+#: gives rooms' floors to such a room (office 61's open-office bay took a meeting room's) after
+#: the width mends had their turn.
+LATE_CLUSTERS = True
 
 #: Whether a room the program can spare that every mend, the dissolve and :data:`LAST_PAIRS` leave
 #: below its minimum area or clear width, and that no room beside it may take, is made a store
@@ -1124,6 +1133,12 @@ def _mended_floor(
             optional=optional,
         )
         mended += dissolved
+    if LATE_CLUSTERS:
+        # a room the dissolve left below its width with the rooms cut from it (an office bay that
+        # took a meeting room's floor) laid out again with them (mansion.building.recut)
+        layout = relay_narrow_clusters(
+            layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0),
+        )
     if LAST_PAIRS:
         # what the dissolve could not spare, if still below its width, cut again with a room
         # beside it by any split at all (mansion.building.pairs)
