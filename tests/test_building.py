@@ -574,9 +574,10 @@ def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow(
     layouts were ranked by their defects, ten before the corridor typology chose each room's
     side and the open offices' bands took their full width) and none with it, with no more
     rooms below their area or slivers. Judged with the later mends of rooms below their width
-    that redraw whole families or split arms off (``steps.NARROW_MENDS``, ``steps.LAST_PAIRS``)
-    turned off: they mend those two open offices too."""
-    from mansion.building import steps
+    that redraw whole families or clusters or split arms off (``steps.NARROW_MENDS``,
+    ``steps.LAST_PAIRS``, ``recut.DEEP_CLUSTERS``, ``steps.LATE_CLUSTERS``) turned off: they
+    mend those two open offices too."""
+    from mansion.building import recut, steps
     from mansion.eval.realism import bench_case, building_rooms, summarise
 
     kind, floors, description = bench_case(117)
@@ -584,6 +585,8 @@ def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow(
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "NARROW_MENDS", ("stores", "merges"))
         mp.setattr(steps, "LAST_PAIRS", False)
+        mp.setattr(recut, "DEEP_CLUSTERS", False)
+        mp.setattr(steps, "LATE_CLUSTERS", False)
         wide = summarise(building_rooms(generate_building(description, building_type=kind, floors=floors, seed=117)))
         mp.setattr(steps, "WIDE_RETRIES", 0)
         capped = summarise(building_rooms(generate_building(description, building_type=kind, floors=floors, seed=117)))
