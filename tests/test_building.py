@@ -941,6 +941,52 @@ def test_a_room_below_its_width_with_rooms_cut_from_it_is_laid_out_again_with_th
     assert (region_b == region_a).all()
 
 
+def test_the_hub_takes_the_arm_of_a_region_too_narrow_for_its_rooms_and_the_floors_above_follow() -> None:
+    """The apartment block of the realism hundred's seed 88 cuts its ground floor so that one
+    flat's region runs 1.5 m wide for 10 m between the corridor and the facade (a bathroom there),
+    and the floors above, which repeat the region between its carried walls, lay that flat's
+    living room or bedroom into the arm. ``steps.REGION_ARMS`` gives the arm to the corridor on
+    the ground floor (the flat's region then a rectangle its rooms fit), and the floors above hold
+    their regions off the walls carried from below (``steps.HOLD_REGIONS``), so that only the
+    corridor beside the arm can take it there too."""
+    from mansion.building import steps
+    from mansion.building.regions import narrow_regions
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(88)
+
+    def narrow(b: Building) -> dict[int, set[str]]:
+        return {
+            f.index: steps.narrow_rooms(f.layout.rooms, kind) for f in b.floors
+            if steps.narrow_rooms(f.layout.rooms, kind)
+        }
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "REGION_ARMS", False)
+        before = generate_building(description, building_type=kind, floors=floors, seed=88)
+    assert narrow_regions(before.floors[0].layout, before.floors[0].graph, kind) == ["bay_5"]
+    assert narrow(before) == {3: {"bay_4"}, 4: {"bay_4"}, 6: {"bay_4"}}
+    assert not any(f.held_regions for f in before.floors)
+
+    after = generate_building(description, building_type=kind, floors=floors, seed=88)
+    check_building(after)
+    ground = after.floors[0]
+    assert narrow_regions(ground.layout, ground.graph, kind) == []
+    hub = ground.graph.hub.id
+    assert ground.layout.room(hub).area == pytest.approx(before.floors[0].layout.room(hub).area + 15.0)
+    # the same rooms on the ground floor, none of them lost
+    assert [r.id for r in ground.layout.rooms] == [r.id for r in before.floors[0].layout.rooms]
+    assert all(f.held_regions for f in after.floors[:-1])
+    assert all(narrow_regions(f.layout, f.graph, kind) == [] for f in after.floors)
+    assert narrow(after) == {}
+
+    # without the floors above holding their regions, the flat above runs into the arm again
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "HOLD_REGIONS", False)
+        loose = generate_building(description, building_type=kind, floors=floors, seed=88)
+    assert narrow_regions(loose.floors[1].layout, loose.floors[1].graph, kind) == ["bay_4"]
+
+
 def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_again_without_it() -> None:
     """School 77 of the realism hundred lays its top floor's art room out as an L round a stair,
     4 m wide where an art room asks 5.4 m, after every mend and its relayout; nothing beside it

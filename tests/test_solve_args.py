@@ -43,6 +43,7 @@ def test_default_options_match_the_binding_contract() -> None:
         "rebalance": False,
         "rebalance_later_only": False,
         "keep_first_round": False,
+        "hold_regions": False,
     }
 
 

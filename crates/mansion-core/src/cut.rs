@@ -33,6 +33,10 @@ pub struct RoundSpec {
     pub reserved: Vec<usize>,
     /// Labels that no later round cuts: fixed walls and minimum width apply to them now.
     pub final_labels: Vec<Label>,
+    /// Labels that may not straddle a fixed wall: the final ones and, on a floor whose first
+    /// round follows the walls carried from the floor below, every region of that round (a
+    /// load-bearing wall parts two flats, not two rooms of one flat).
+    pub walled: Vec<Label>,
     /// Graph edges to check after this round (both ends exist, one of them in this round), with the
     /// names used in diagnostics.
     pub required: Vec<(Label, Label)>,
@@ -59,6 +63,7 @@ pub fn leftover_round(
         remainder: Some((0, parent_target)),
         reserved: vec![],
         final_labels: (0..=n).collect(),
+        walled: (0..=n).collect(),
         required,
         names: names.iter().map(|s| s.to_string()).collect(),
     }
@@ -755,7 +760,7 @@ impl<'a> Prepared<'a> {
                 _ => return Err(Reject::Disconnected(l)),
             }
         }
-        for &l in &self.spec.final_labels {
+        for &l in &self.spec.walled {
             if topology::straddles(grid, &self.region, self.walls, l) {
                 return Err(Reject::Straddles(l));
             }
@@ -1268,6 +1273,7 @@ pub fn grow_batch(
         planned: seeds.to_vec(),
         remainder: Some((region, (cells - targets.iter().sum::<f64>()).max(1.0))),
         final_labels: vec![],
+        walled: vec![],
         required: vec![],
         reserved: vec![],
         names: vec![String::new(); n_labels],
@@ -1327,9 +1333,35 @@ mod tests {
             remainder: Some((0, parent_target)),
             reserved: vec![],
             final_labels: vec![0, 1, 2],
+            walled: vec![0, 1, 2],
             required: vec![],
             names: vec!["parent".into(), "a".into(), "b".into()],
         }
+    }
+
+    #[test]
+    fn a_walled_region_may_not_straddle_a_fixed_wall_where_a_room_cut_later_may() {
+        let base = parse_rows(&["0000000000"; 4]);
+        // room 1 runs across the wall between the fifth and sixth columns of its two rows;
+        // room 2 holds the row below, the parent the bottom row
+        let won = parse_rows(&["1111111111", "1111111111", "2222222222", "0000000000"]);
+        let mut walls = Walls::none(base.w, base.h);
+        for y in 3..=4 {
+            walls.block_vertical(6, y); // padded: columns 5 and 6, rows 3 and 4 (the top two)
+        }
+        let opts = CutOptions::default();
+        let mut s = Scratch::new(base.cells.len());
+        let mut spec = round([20.0, 20.0], 1.0);
+        // room 1 cut again later (a flat, its rooms laid out in the next round): not final,
+        // so the wall may run between two of its rooms
+        spec.final_labels = vec![0, 2];
+        spec.walled = vec![0, 2];
+        let p = Prepared::new(&base, &walls, &spec, &opts, 3, 0);
+        assert!(p.check(&won, &mut s).is_ok());
+        // held as a region of the first round, it may not
+        spec.walled = vec![0, 1, 2];
+        let p = Prepared::new(&base, &walls, &spec, &opts, 3, 0);
+        assert!(matches!(p.check(&won, &mut s), Err(Reject::Straddles(1))));
     }
 
     #[test]

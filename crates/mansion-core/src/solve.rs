@@ -115,6 +115,10 @@ pub struct SolveOptions {
     /// the first round as cut (a floor whose walls between them the floor above carries as
     /// load-bearing walls).
     pub keep_first_round: bool,
+    /// With `keep_first_round`: the first round's regions, not only its rooms, may not straddle
+    /// a fixed wall (a floor above one whose hub took the arm of a region: the flat above must
+    /// not run its region round the carried wall into the arm).
+    pub hold_regions: bool,
 }
 
 impl Default for SolveOptions {
@@ -147,6 +151,7 @@ impl Default for SolveOptions {
             rebalance: false,
             rebalance_later_only: false,
             keep_first_round: false,
+            hold_regions: false,
         }
     }
 }
@@ -910,11 +915,22 @@ pub fn solve_floor(
                 .copied()
                 .filter(|c| !opts.hierarchical || !has_children.contains(c)),
         );
+        // with `hold_regions`, the first round's regions may not straddle the walls carried
+        // from below either: a region across a carried wall (a flat's arm past it along the
+        // facade, where the hub below took the arm) leaves its rooms the arm on every floor
+        let walled = if opts.keep_first_round && opts.hold_regions && *parent == floor.hub {
+            let mut all = vec![*parent];
+            all.extend(children.iter().copied());
+            all
+        } else {
+            final_labels.clone()
+        };
         let spec = RoundSpec {
             parent: *parent,
             growers,
             planned,
             remainder,
+            walled,
             final_labels,
             required,
             reserved: if remainder.is_some() {

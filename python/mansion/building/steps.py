@@ -80,6 +80,7 @@ from mansion.building.pairs import recut_pairs
 from mansion.building.recut import (
     _least, hand_off_strips, recut_narrow_rooms, recut_unfit_rooms, relay_narrow_clusters, widen_passages,
 )
+from mansion.building.regions import hub_takes_arms
 from mansion.building.sides import enlarge_rooms, widen_sides
 from mansion.building.stores import store_pockets, store_spare_rooms
 from mansion.exceptions import InfeasibleLayoutError, InvalidInputError
@@ -773,6 +774,21 @@ def _better_relayout(other: Floor, found: tuple[int, int], floor: Floor, left: t
 SMALL_FLOOR_RELAYOUTS = 3
 SMALL_FLOOR_AREA = 120.0
 
+#: Whether, on the floor whose first-round walls go up through the building (:func:`_walls_go_up`),
+#: the hub, where it is circulation, takes the arms of the first-round regions too narrow for
+#: their rooms that lie beside it, before the floor's other mends
+#: (:func:`mansion.building.regions.hub_takes_arms`): each floor above repeats the region, and
+#: its rooms cannot leave the arm, since no mend there moves a carried wall (apartment block 88 of
+#: the realism hundred: a flat's region ran 1.5 m wide for 10 m between the corridor and the
+#: facade, and its living room took that arm on three floors above).
+REGION_ARMS = True
+
+#: Whether the floors above one whose hub took such an arm hold their first-round regions, not
+#: only their rooms, off the walls carried from below (``SolverSettings.hold_regions``;
+#: ``Floor.held_regions`` passes it up): else the flat above runs its region round the carried
+#: wall into the arm, which lies against the facade, and lays a bedroom 1.5 m wide there.
+HOLD_REGIONS = True
+
 #: Whether a relayout is kept only when it also leaves fewer rooms below their area or width,
 #: elongated or slivers (:func:`misshapen`) in all than the layout it replaces: not one that
 #: trades a room below its width for an elongated one.
@@ -791,6 +807,13 @@ def _bad_rooms(layout: FloorLayout, graph: RoomGraph, building_type: str | None)
         **dict.fromkeys(narrow_rooms(layout.rooms, building_type), NARROW_WHY),
         **unfit_rooms(layout.rooms, graph),
     }
+
+
+def _walls_go_up(program: BuildingProgram, index: int, footprint: Footprint) -> bool:
+    """Whether the first-round walls of floor ``index`` (laid on ``footprint``) go up to a floor
+    above that it does not follow itself: its first round was cut freely (no walls carried from
+    below), the program keeps load-bearing walls and a floor lies above."""
+    return program.load_bearing_walls and not footprint.fixed_walls and index + 1 < program.floor_count
 
 
 def _bad_counts(layout: FloorLayout, graph: RoomGraph, building_type: str | None) -> tuple[int, int]:
@@ -869,10 +892,16 @@ def _solve_building_floor(
                 planner = SkeletonSeedPlanner(
                     graph.hub.id, {k: p for k, (_, p) in regions.items()}, rest=seed_planner
                 )
+    # the floors above one whose hub took a region's arm hold their regions off the carried walls
+    hold = bool(
+        HOLD_REGIONS and program.load_bearing_walls and below is not None and below.held_regions and fp.fixed_walls
+    )
     if program.load_bearing_walls and solver.get("settings") is not None:
         # the floor above carries the walls between this floor's first-round regions: the
         # repair moves cells only within a region, so those walls stay where the cut put them
-        solver = {**solver, "settings": solver["settings"].model_copy(update={"keep_first_round": True})}
+        solver = {**solver, "settings": solver["settings"].model_copy(
+            update={"keep_first_round": True, "hold_regions": hold},
+        )}
     planned, footprint = graph, fp
     layout, graph, fp, rng_seed, attempts, relax = _solve(
         index, planned, fp, planner, seed, solver, drop_widths, start=start,
@@ -947,12 +976,23 @@ def _solve_building_floor(
                 relaid = True
                 break
     mended: list[str] = []
+    held = hold
     if fewest is not None:
         layout, graph, mended = fewest
     elif premended is not None and not relaid:
         layout, graph, mended = premended
     elif repairs:
+        arms: list[str] = []
+        if REGION_ARMS and _walls_go_up(program, index, fp):
+            # first, the hub takes the arms of first-round regions too narrow for their rooms:
+            # every floor above repeats the regions (mansion.building.regions)
+            took = hub_takes_arms(
+                layout, graph, program.building_type, min_contact=solver.get("min_contact", 1.0), keep=frozenset(asked),
+            )
+            held = took[0] is not layout
+            layout, graph, arms = took
         layout, graph, mended = _mended_floor(layout, graph, program, asked, solver, index)
+        mended = [*arms, *mended]
         bt = program.building_type
         if premended is not None and _bad_counts(*premended[:2], bt) <= _bad_counts(layout, graph, bt):
             # the layout without rooms came out of its mends no better: keep every room
@@ -970,6 +1010,7 @@ def _solve_building_floor(
         room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
         relaxations=[*floor_program.relaxations, *left_out, *relax, *mended],
         carried_walls=first_round_walls(layout, graph) if program.load_bearing_walls else [],
+        held_regions=held,
         position_words=words,
     )
     # laid out again whole only with the offline seeds (a seed planner, Claude's or the

@@ -148,6 +148,9 @@ class SolverSettings(BaseModel):
     - ``keep_first_round`` (with ``repair`` and ``rebalance``): the first round stays as cut and cells move only
       within one of its regions, so the walls between them stay where the cut put them
       (generated floors whose walls the floor above carries as load-bearing walls).
+    - ``hold_regions`` (with ``keep_first_round``): the first round's regions, not only its
+      rooms, may not straddle a fixed wall (the floors above one whose hub took a narrow
+      region's arm, :mod:`mansion.building.regions`).
 
     How the defaults were chosen (``mansion eval floorplan`` on the T2D development plans, even
     ids, hierarchical mode, micro / macro IoU; and the solver's own benchmark, whose seeds come
@@ -192,6 +195,7 @@ class SolverSettings(BaseModel):
     rebalance: bool = False
     rebalance_later_only: bool = False
     keep_first_round: bool = False
+    hold_regions: bool = False
 
     @model_validator(mode="after")
     def _check_gammas(self) -> SolverSettings:

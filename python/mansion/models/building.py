@@ -239,6 +239,13 @@ class Floor(BaseModel):
         default_factory=list,
         description="The load-bearing walls this floor passes to the floor above.",
     )
+    held_regions: bool = Field(
+        default=False,
+        description=(
+            "Whether the floors above hold their first-round regions, not only their rooms, off the walls this "
+            "floor passes up: its hub took the arm of a region too narrow for its rooms, or the floor below's did."
+        ),
+    )
     position_words: list[PositionWord] = Field(
         default_factory=list,
         description="What the description said about where this floor's rooms go, and whether the layout honours it.",
