@@ -26,10 +26,13 @@ lacked, or, when all its cells go, is a room the program can spare with no room 
 keeps its wall, a door's where it had one. The region must come out no longer narrow, else
 nothing moves.
 
-The floors above follow: the solver holds the regions of a floor's first round, not only its
-rooms, off the walls carried from below (``keep_first_round``; ``walled`` in
-crates/mansion-core/src/cut.rs), so the flat above cannot run its region round the new wall into
-the arm, which only the hub beside it can then take.
+The floors above follow: where the hub took an arm (``Floor.held_regions``, passed up), the
+solver holds the regions of their first round, not only their rooms, off the walls carried from
+below (``SolverSettings.hold_regions``; ``walled`` in crates/mansion-core/src/cut.rs), so the flat
+above cannot run its region round the new wall into the arm, which only the hub beside it can
+then take. Elsewhere the regions above may still straddle a carried wall where their rooms part
+along it (an office floor above a lobby floor of other regions): held everywhere, those floors
+lost rooms (office 159 of the second hundred seven).
 """
 
 from __future__ import annotations
