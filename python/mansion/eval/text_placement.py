@@ -235,35 +235,31 @@ def solve_from_text(
     agreements: dict[tuple[int, int], float] = {}
     # the layouts of the seed sets read from the text, which the relayouts' agreement is judged by
     independent = len(solved)
+
+    def relayout(again: dict[str, tuple[float, float]], offset: int) -> None:
+        # seeds near the layout solved under ``offset``, laid out under :func:`_refine_offsets`
+        tried.append(again)
+        for k in _refine_offsets(offset, reseed is not None):
+            try:
+                pred, layout = run(again, k)
+            except MansionError:
+                continue
+            score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
+            solved.append((score, again, pred, layout))
+            offsets.append(k)
+
     for count in (REFINE, *[REFINE_AGAIN] * AGAIN_ROUNDS):
         for j in _ranking(solved, agreements, independent)[:count]:
             again = _room_seeds(solved[j][3].grid)
-            if again is None or again in tried:
-                continue
-            tried.append(again)
-            for k in _refine_offsets(offsets[j], reseed is not None):
-                try:
-                    pred, layout = run(again, k)
-                except MansionError:
-                    continue
-                score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
-                solved.append((score, again, pred, layout))
-                offsets.append(k)
+            if again is not None and again not in tried:
+                relayout(again, offsets[j])
     best = _ranking(solved, agreements, independent)[0]
     # the layout kept, its rooms far from where the seed sets' layouts put them moved there
     medians = _room_medians([s[3].grid for s in solved[:independent]])
     for _ in range(LOCAL_ROUNDS):
-        moves = [m for m in _consensus_moves(solved[best][3].grid, medians, p.free) if m not in tried]
-        for again in moves:
-            tried.append(again)
-            for k in _refine_offsets(offsets[best], reseed is not None):
-                try:
-                    pred, layout = run(again, k)
-                except MansionError:
-                    continue
-                score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
-                solved.append((score, again, pred, layout))
-                offsets.append(k)
+        for again in _consensus_moves(solved[best][3].grid, medians, p.free):
+            if again not in tried:
+                relayout(again, offsets[best])
         kept = _ranking(solved, agreements, independent)[0]
         if kept == best:
             break
