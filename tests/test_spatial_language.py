@@ -724,7 +724,7 @@ def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytes
 
 
 def test_a_room_of_the_layout_kept_far_from_where_the_others_put_it_is_seeded_there() -> None:
-    from mansion.eval.text_placement import LOCAL_DISTANCE, _consensus_moves, _room_medians
+    from mansion.eval.text_placement import LOCAL_DISTANCE, _consensus_moves, _room_medians, _room_seeds
 
     free = FreeGrid(np.ones((10, 20), dtype=bool))
     ids = ["living", "kitchen", "bath"]
@@ -733,11 +733,12 @@ def test_a_room_of_the_layout_kept_far_from_where_the_others_put_it_is_seeded_th
     usual[:, :4], usual[:, 16:] = 1, 2
     medians = _room_medians([_Grid(usual, ids), _Grid(usual.copy(), ids), _Grid(usual[::-1].copy(), ids)])
     assert medians["kitchen"] == (2.0, 5.0) and medians["bath"] == (18.0, 5.0)
-    # the layout kept has them the other way round: each moved alone, then both at once
+    # the layout kept has them the other way round: each moved alone, then both at once, then
+    # each alone halfway
     kept = np.zeros((10, 20), dtype=int)
     kept[:, :4], kept[:, 16:] = 2, 1
     moves = _consensus_moves(_Grid(kept, ids), medians, free)
-    assert len(moves) == 3
+    assert len(moves) == 5
 
     def at(point: tuple[float, float], median: tuple[float, float]) -> bool:  # a free cell next to it
         return max(abs(point[0] - median[0]), abs(point[1] - median[1])) <= 0.5
@@ -745,6 +746,10 @@ def test_a_room_of_the_layout_kept_far_from_where_the_others_put_it_is_seeded_th
     assert at(moves[0]["kitchen"], medians["kitchen"]) and not at(moves[0]["bath"], medians["bath"])
     assert not at(moves[1]["kitchen"], medians["kitchen"]) and at(moves[1]["bath"], medians["bath"])
     assert at(moves[2]["kitchen"], medians["kitchen"]) and at(moves[2]["bath"], medians["bath"])
+    seeds = _room_seeds(_Grid(kept, ids))
+    assert seeds is not None
+    assert abs(moves[3]["kitchen"][0] - 10) <= 1 and moves[3]["bath"] == seeds["bath"]
+    assert abs(moves[4]["bath"][0] - 10) <= 1 and moves[4]["kitchen"] == seeds["kitchen"]
     # the living room, near its median, keeps its seed at its own cells
     assert all(m["living"] == moves[0]["living"] for m in moves)
     # a room nearer its median than LOCAL_DISTANCE cells is not moved
