@@ -471,7 +471,10 @@ AGAIN_ROUNDS = 4
 #: 68.85 / 65.92 → 69.28 / 66.41, even 73.13 / 69.84 → 73.42 / 70.13 (254 and 245 plans the
 #: text lays out), 3.6 and 2.4 solves more a plan; six rounds the same figures (the search stops
 #: before). The moves halfway added: 69.35 / 66.50 and 73.62 / 70.30, 7.5 and 5.3 solves more a
-#: plan in all. Measured there and left (against the search without the moves halfway): rooms moved one at a time only 69.19 / 66.31 and 73.42 /
+#: plan in all. Full runs, all 500 dev plans, micro / macro: 70.77 / 67.67 → 71.13 / 68.06 (odd
+#: ids 68.51 / 65.59 → 68.94 / 66.08, even 73.13 / 69.84 → 73.41 / 70.12) → 71.26 / 68.19 with
+#: the moves halfway (69.00 / 66.17, 73.61 / 70.28). Measured there and left (against the search
+#: without the moves halfway): rooms moved one at a time only 69.19 / 66.31 and 73.42 /
 #: 70.13, all at once only 68.95 / 66.00 and 73.15 / 69.87; pairs of rooms whose seeds swapped
 #: bring both nearer their medians tried too 69.28 / 66.41 and 73.42 / 70.13 (no gain); the
 #: search started from the three ranked best 68.96 / 65.93 and 73.54 / 70.13 (9.3 and 7.4 solves
