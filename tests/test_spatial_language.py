@@ -671,6 +671,7 @@ def test_the_best_layouts_are_laid_out_again_from_their_own_rooms(monkeypatch: p
         return np.zeros((64, 64), dtype=int), _Layout(len(solved))
 
     monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: float(len(solved)))
+    monkeypatch.setattr(text_placement, "LOCAL_ROUNDS", 0)  # the local search after them: below
     # the stand-in layouts give three sets of room seeds: three are laid out again
     assert REFINE >= 3
     monkeypatch.setattr(text_placement, "REFINE", 3)
@@ -709,6 +710,7 @@ def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytes
     monkeypatch.setattr(text_placement, "REFINE", 2)
     monkeypatch.setattr(text_placement, "REFINE_AGAIN", 1)
     monkeypatch.setattr(text_placement, "AGAIN_ROUNDS", 2)
+    monkeypatch.setattr(text_placement, "LOCAL_ROUNDS", 0)
     chosen, _, layout = solve_from_text(plan, "The kitchen is in the north.", solve)
     read = len(solved) - 4
     assert read >= 2
@@ -720,6 +722,80 @@ def test_the_best_of_all_layouts_are_laid_out_again_once_more(monkeypatch: pytes
     assert solved[read + 3] == _room_seeds(layouts[read + 2].grid)
     assert chosen == solved[-1] and layout is layouts[-1]
 
+
+def test_a_room_of_the_layout_kept_far_from_where_the_others_put_it_is_seeded_there() -> None:
+    from mansion.eval.text_placement import LOCAL_DISTANCE, _consensus_moves, _room_medians, _room_seeds
+
+    free = FreeGrid(np.ones((10, 20), dtype=bool))
+    ids = ["living", "kitchen", "bath"]
+    # the seed sets' layouts put the kitchen at the west end, the bathroom at the east end
+    usual = np.zeros((10, 20), dtype=int)
+    usual[:, :4], usual[:, 16:] = 1, 2
+    medians = _room_medians([_Grid(usual, ids), _Grid(usual.copy(), ids), _Grid(usual[::-1].copy(), ids)])
+    assert medians["kitchen"] == (2.0, 5.0) and medians["bath"] == (18.0, 5.0)
+    # the layout kept has them the other way round: each moved alone, then both at once, then
+    # each alone halfway
+    kept = np.zeros((10, 20), dtype=int)
+    kept[:, :4], kept[:, 16:] = 2, 1
+    moves = _consensus_moves(_Grid(kept, ids), medians, free)
+    assert len(moves) == 5
+
+    def at(point: tuple[float, float], median: tuple[float, float]) -> bool:  # a free cell next to it
+        return max(abs(point[0] - median[0]), abs(point[1] - median[1])) <= 0.5
+
+    assert at(moves[0]["kitchen"], medians["kitchen"]) and not at(moves[0]["bath"], medians["bath"])
+    assert not at(moves[1]["kitchen"], medians["kitchen"]) and at(moves[1]["bath"], medians["bath"])
+    assert at(moves[2]["kitchen"], medians["kitchen"]) and at(moves[2]["bath"], medians["bath"])
+    seeds = _room_seeds(_Grid(kept, ids))
+    assert seeds is not None
+    assert abs(moves[3]["kitchen"][0] - 10) <= 1 and moves[3]["bath"] == seeds["bath"]
+    assert abs(moves[4]["bath"][0] - 10) <= 1 and moves[4]["kitchen"] == seeds["kitchen"]
+    # the living room, near its median, keeps its seed at its own cells
+    assert all(m["living"] == moves[0]["living"] for m in moves)
+    # a room nearer its median than LOCAL_DISTANCE cells is not moved
+    near = usual.copy()
+    near[:, :4], near[:, 4:5] = 0, 1
+    assert LOCAL_DISTANCE > 1 and _consensus_moves(_Grid(near, ids), medians, free) == []
+
+
+def test_the_local_search_keeps_a_relaid_layout_only_when_it_ranks_first(monkeypatch: pytest.MonkeyPatch) -> None:
+    from mansion.eval import text_placement
+    from mansion.eval.t2d import T2DPlan, node_id
+    from mansion.eval.text_placement import LOCAL_ROUNDS, solve_from_text
+
+    assert LOCAL_ROUNDS >= 1
+    plan = T2DPlan.model_validate(make_plan(2))
+    ids = [node_id(r) for r in plan.rooms]
+    solved: list[dict] = []
+    local: list[int] = []
+
+    class _Layout:
+        def __init__(self, n: int) -> None:
+            self.grid = _Grid(np.repeat(np.arange(len(ids)).repeat([n % 5 + 1] + [1] * (len(ids) - 1))[None, :], 2, axis=0), ids)
+
+    def solve(s):
+        solved.append(s)
+        return np.zeros((64, 64), dtype=int), _Layout(len(solved))
+
+    moves = iter(range(100))
+
+    def consensus_moves(grid, medians, free):
+        # one new seed set a round, from the layout ranked first
+        local.append(len(solved))
+        return [{rid: (float(next(moves)), 0.0) for rid in ids}]
+
+    # the layouts of the local search agree with the text better than any before them
+    monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: -100.0 * len(local))
+    monkeypatch.setattr(text_placement, "_consensus_moves", consensus_moves)
+    chosen, _, _ = solve_from_text(plan, "The kitchen is in the north.", solve)
+    # each round's layout ranks first, so the search goes on for every round and keeps the last
+    assert len(local) == LOCAL_ROUNDS and chosen == solved[-1]
+    # when the first round's layouts rank below the one kept, the search stops there
+    solved.clear()
+    local.clear()
+    monkeypatch.setattr(text_placement, "layout_disagreement", lambda *a, **k: 100.0 * len(local))
+    chosen, _, _ = solve_from_text(plan, "The kitchen is in the north.", solve)
+    assert len(local) == 1 and chosen not in solved[local[0]:]
 
 def _two_layouts_and_an_outlier() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Two class maps that share all but one cell, and a third laid out the other way round."""
