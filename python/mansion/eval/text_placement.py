@@ -178,7 +178,10 @@ def solve_from_text(
     seed that laid them out and under :data:`REFINE_GROWN` (the longest-side growth,
     :func:`text_settings`), then the :data:`REFINE_AGAIN` ranked best among all of them, when
     their rooms give seeds not tried yet, :data:`AGAIN_ROUNDS` times. Each layout's agreement is
-    measured against the layouts of the seed sets read from the text only (:func:`_ranking`)."""
+    measured against the layouts of the seed sets read from the text only (:func:`_ranking`).
+    Last, a local search on the layout kept (:data:`LOCAL_ROUNDS`): its rooms far from where the
+    seed sets' layouts mostly put them are seeded there (:func:`_consensus_moves`), and a layout
+    so made is kept when it ranks first."""
     p = text_problem(plan, description)
     base = SeedWeights()
     solved: list[tuple[float, dict[str, tuple[float, float]], Any, Any]] = []
@@ -347,7 +350,7 @@ def _consensus_moves(
     centroid is more than :data:`LOCAL_DISTANCE` cells from its median over the seed sets'
     layouts (``medians``) seeded at the free cell nearest that median instead, one room at a time,
     then all such rooms at once (when more than one), then each alone at the free cell nearest
-    halfway from its seed to that median. None when no room is that far."""
+    halfway from its seed to that median; none when no room is that far or a room has no cell."""
     import numpy as np
 
     seeds = _room_seeds(grid)
