@@ -642,6 +642,9 @@ def test_a_floor_the_mends_bring_to_its_minimums_keeps_every_room() -> None:
     assert steps.MEND_FIRST
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "MEND_FIRST", False)
+        # else the floor, its sleep room still below its width, is laid out once more without an
+        # optional room (steps.MAKE_ROOM_OPTIONAL)
+        mp.setattr(steps, "MAKE_ROOM_OPTIONAL", False)
         bad_out, rooms_out, left_out = ground()
     assert any(n.startswith("group_room_1 left out") for n in left_out) and bad_out
     bad, rooms, left = ground()
@@ -1012,6 +1015,38 @@ def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_ag
     assert "art_room" in {r.id for r in fastest.layout.rooms}
 
 
+def test_a_floor_left_with_a_room_below_its_width_is_laid_out_again_without_an_optional_room() -> None:
+    """Kindergarten 78 of the realism hundred lays its ground floor's sleep room out as a T
+    between the stair and the washroom, 1.5 m deep where a sleep room asks 3.6 m, after every mend
+    and its relayout; the sleep room is the floor's only one, and no room beside it may take its
+    floor. The template plans a staff office and a sick room only where they fit (``optional``):
+    ``steps.MAKE_ROOM_OPTIONAL`` lays the floor out again whole without one of them, the largest
+    first, kept as a relayout is (fewer rooms bad, none more misshapen), and records why."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(78)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "MAKE_ROOM_OPTIONAL", False)
+        before = generate_building(description, building_type=kind, floors=floors, seed=78).floors[0]
+    assert steps.narrow_rooms(before.layout.rooms, kind) == {"sleep_room"}
+    after = generate_building(description, building_type=kind, floors=floors, seed=78).floors[0]
+    assert steps.narrow_rooms(after.layout.rooms, kind) == set()
+    assert steps.unfit_rooms(after.layout.rooms, after.graph) == {}
+    assert after.relaxations[0] == (
+        "staff_office left out: room made for sleep_room (laid out narrower than its clear width)"
+    )
+    assert sum(steps.misshapen(after.layout.rooms)) <= sum(steps.misshapen(before.layout.rooms))
+    # one optional room for the other: the sick room, dissolved before, stays
+    assert {r.id for r in before.layout.rooms} - {r.id for r in after.layout.rooms} == {"staff_office"}
+    assert {r.id for r in after.layout.rooms} - {r.id for r in before.layout.rooms} == {"sick_room"}
+    # nothing is laid out again without relayouts
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "SMALL_FLOOR_RELAYOUTS", 0)
+        none = generate_building(description, building_type=kind, floors=floors, seed=78, relayouts=0).floors[0]
+    assert not any("room made for" in note for note in none.relaxations)
+
+
 def test_a_small_floor_is_laid_out_again_more_times_than_asked() -> None:
     """Townhouse 86 of the realism hundred lays its ground floor's living room, the hub, out as an
     L 2.5 m wide round the stair (a living room asks 3 m), and one relayout does no better. A
@@ -1027,6 +1062,8 @@ def test_a_small_floor_is_laid_out_again_more_times_than_asked() -> None:
     assert steps.narrow_rooms(fastest.layout.rooms, kind) == {"living_room"}  # none laid out again
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "SMALL_FLOOR_RELAYOUTS", 0)
+        # else the floor is laid out again without an optional room (steps.MAKE_ROOM_OPTIONAL)
+        mp.setattr(steps, "MAKE_ROOM_OPTIONAL", False)
         once = generate_building(description, building_type=kind, floors=floors, seed=86).floors[0]
     assert steps.narrow_rooms(once.layout.rooms, kind) == {"living_room"}
     more = generate_building(description, building_type=kind, floors=floors, seed=86).floors[0]

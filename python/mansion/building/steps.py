@@ -741,19 +741,31 @@ def _without_optional(
     optional = _optional_rooms(program, index, graph, asked)
     bad = _bad_rooms(floor.layout, floor.graph, kind)
     spare = {room: why for room, why in bad.items() if room in optional}
-    fewer, notes = leave_out(graph, spare, keep=asked, optional=optional) if spare else (graph, [])
-    if not notes:
+    tries = [spare] if spare else []
+    if MAKE_ROOM_OPTIONAL and not spare:
+        # no optional room is bad: one of them, the largest first, makes room for those that are
+        first = min(bad, key=lambda r: (r not in {n.id for n in graph.nodes}, r))
+        why = f"room made for {first} ({bad[first]})"
+        sizes = {n.id: n.area for n in graph.nodes}
+        tries = [{room: why} for room in sorted(optional, key=lambda r: (-sizes.get(r, 0.0), r))][:MAKE_ROOM_TRIES]
+    best: tuple[Floor, tuple[int, int], list[str]] | None = None
+    for k, out in enumerate(tries):
+        fewer, notes = leave_out(graph, out, keep=asked, optional=optional)
+        if not notes:
+            continue
+        try:
+            other, _ = _solve_building_floor(
+                program, index, fewer, below, derived_seed(seed, "optional", index, *([k] if k else [])), quick,
+                seed_planner, description, drop_widths, start=floor.attempts - 1 if RELAYOUT_FROM_RUNG else 0,
+            )
+        except InfeasibleLayoutError:
+            continue
+        found = _bad_counts(other.layout, other.graph, kind)
+        if _better_relayout(other, found, *(best[:2] if best else (floor, left))):
+            best = (other, found, notes)
+    if best is None:
         return floor
-    try:
-        other, _ = _solve_building_floor(
-            program, index, fewer, below, derived_seed(seed, "optional", index), quick,
-            seed_planner, description, drop_widths, start=floor.attempts - 1 if RELAYOUT_FROM_RUNG else 0,
-        )
-    except InfeasibleLayoutError:
-        return floor
-    if _better_relayout(other, _bad_counts(other.layout, other.graph, kind), floor, left):
-        return other.model_copy(update={"relaxations": [*notes, *other.relaxations]})
-    return floor
+    return best[0].model_copy(update={"relaxations": [*best[2], *best[0].relaxations]})
 
 
 def _better_relayout(other: Floor, found: tuple[int, int], floor: Floor, left: tuple[int, int]) -> bool:
@@ -772,6 +784,13 @@ def _better_relayout(other: Floor, found: tuple[int, int], floor: Floor, left: t
 #: out in a fraction of the time of a hospital's, and its living room, the hub, wraps round the
 #: stair under one seed where another seed lays it out square.
 SMALL_FLOOR_RELAYOUTS = 3
+
+#: Whether a floor its relayouts still leave with rooms below their minimums, none of them one of
+#: its template's optional rooms, is laid out again without one of those (the largest first, up
+#: to :data:`MAKE_ROOM_TRIES`), kept as a relayout is: a hotel's conference room makes room for
+#: its commercial kitchen.
+MAKE_ROOM_OPTIONAL = True
+MAKE_ROOM_TRIES = 2
 SMALL_FLOOR_AREA = 120.0
 
 #: Whether, on the floor whose first-round walls go up through the building (:func:`_walls_go_up`),
