@@ -990,6 +990,20 @@ def test_the_hub_takes_the_arm_of_a_region_too_narrow_for_its_rooms_and_the_floo
     assert narrow_regions(loose.floors[1].layout, loose.floors[1].graph, kind) == ["bay_4"]
 
 
+def _floor_without_and_with(seed: int, index: int, switch: str) -> tuple[str, Floor, Floor]:
+    """The realism hundred's building ``seed``: its building type and floor ``index`` generated
+    with ``steps.<switch>`` off, then on."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(seed)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, switch, False)
+        before = generate_building(description, building_type=kind, floors=floors, seed=seed).floors[index]
+    after = generate_building(description, building_type=kind, floors=floors, seed=seed).floors[index]
+    return kind, before, after
+
+
 def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_again_without_it() -> None:
     """School 77 of the realism hundred lays its top floor's art room out as an L round a stair,
     4 m wide where an art room asks 5.4 m, after every mend and its relayout; nothing beside it
@@ -1000,11 +1014,8 @@ def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_ag
     from mansion.eval.realism import bench_case
 
     kind, floors, description = bench_case(77)
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(steps, "LEAVE_OPTIONAL", False)
-        before = generate_building(description, building_type=kind, floors=floors, seed=77).floors[9]
+    kind, before, after = _floor_without_and_with(77, 9, "LEAVE_OPTIONAL")
     assert steps.narrow_rooms(before.layout.rooms, kind) == {"art_room"}
-    after = generate_building(description, building_type=kind, floors=floors, seed=77).floors[9]
     assert steps.narrow_rooms(after.layout.rooms, kind) == set()
     assert not steps.unfit_rooms(after.layout.rooms, after.graph)
     assert "art_room left out: laid out narrower than its clear width" in after.relaxations
@@ -1026,11 +1037,8 @@ def test_a_floor_left_with_a_room_below_its_width_is_laid_out_again_without_an_o
     from mansion.eval.realism import bench_case
 
     kind, floors, description = bench_case(78)
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(steps, "MAKE_ROOM_OPTIONAL", False)
-        before = generate_building(description, building_type=kind, floors=floors, seed=78).floors[0]
+    kind, before, after = _floor_without_and_with(78, 0, "MAKE_ROOM_OPTIONAL")
     assert steps.narrow_rooms(before.layout.rooms, kind) == {"sleep_room"}
-    after = generate_building(description, building_type=kind, floors=floors, seed=78).floors[0]
     assert steps.narrow_rooms(after.layout.rooms, kind) == set()
     assert steps.unfit_rooms(after.layout.rooms, after.graph) == {}
     assert after.relaxations[0] == (
