@@ -734,7 +734,9 @@ def _without_optional(
     floor: Floor, left: tuple[int, int],
 ) -> Floor:
     """``floor``, or the floor laid out again whole without the optional rooms of its template
-    that its relayouts still leave below their minimums (:data:`LEAVE_OPTIONAL`) where that leaves
+    that its relayouts still leave below their minimums (:data:`LEAVE_OPTIONAL`), or, when none of
+    the rooms left so is optional, without one of its optional rooms, the largest first, up to
+    :data:`MAKE_ROOM_TRIES` tries (:data:`MAKE_ROOM_OPTIONAL`): the best of them where it leaves
     fewer rooms bad, as a relayout is kept; each room left out recorded."""
     kind = program.building_type
     asked = _asked(program)
