@@ -854,13 +854,9 @@ def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_
     coming out with no defect at all; nothing of the program changes."""
     from mansion.building import steps
     from mansion.building.pairs import recut_pairs
-    from mansion.eval.realism import bench_case
     from mansion.models.room_design import room_design
 
-    kind, floors, description = bench_case(75)
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(steps, "LAST_PAIRS", False)
-        before = generate_building(description, building_type=kind, floors=floors, seed=75)
+    kind, before, after = _without_and_with(75, "LAST_PAIRS")
     floor = before.floors[5]
     assert steps.narrow_rooms(floor.layout.rooms, kind) == {"board_room"}
     # the same mend, capped as in NARROW_MENDS, finds nothing; uncapped, it mends the room
@@ -870,11 +866,22 @@ def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_
         floor.layout, floor.graph, kind, same_region=before.program.load_bearing_walls, tried=None, clean=True,
     )
     assert steps.narrow_rooms(every.rooms, kind) == set()
-
-    after = generate_building(description, building_type=kind, floors=floors, seed=75)
     mended = _mended_keeping_the_program(floor, after, 5, "board_room")
     for r in mended.layout.rooms:
         assert r.is_core or r.area + 1e-6 >= room_design(r.room_type).min_area
+
+
+def _without_and_with(seed: int, switch: str) -> tuple[str, Building, Building]:
+    """The realism hundred's building ``seed``: its building type, and the building generated
+    with ``steps.<switch>`` off, then on."""
+    from mansion.building import steps
+    from mansion.eval.realism import bench_case
+
+    kind, floors, description = bench_case(seed)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, switch, False)
+        before = generate_building(description, building_type=kind, floors=floors, seed=seed)
+    return kind, before, generate_building(description, building_type=kind, floors=floors, seed=seed)
 
 
 def _mended_keeping_the_program(floor: Floor, after: Building, index: int, room: str) -> Floor:
@@ -912,12 +919,8 @@ def test_a_room_below_its_width_with_rooms_cut_from_it_is_laid_out_again_with_th
     nothing of the program changes and no room gains a defect."""
     from mansion.building import recut, steps
     from mansion.building.load_bearing import cut_parents
-    from mansion.eval.realism import bench_case
 
-    kind, floors, description = bench_case(61)
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(steps, "LATE_CLUSTERS", False)
-        before = generate_building(description, building_type=kind, floors=floors, seed=61)
+    kind, before, after = _without_and_with(61, "LATE_CLUSTERS")
     floor = before.floors[1]
     assert steps.narrow_rooms(floor.layout.rooms, kind) == {"bay_1"}
     parent = cut_parents(floor.graph)
@@ -928,7 +931,6 @@ def test_a_room_below_its_width_with_rooms_cut_from_it_is_laid_out_again_with_th
     relaid = recut.relay_narrow_clusters(floor.layout, floor.graph, kind)
     assert steps.narrow_rooms(relaid.rooms, kind) == set()
 
-    after = generate_building(description, building_type=kind, floors=floors, seed=61)
     mended = _mended_keeping_the_program(floor, after, 1, "bay_1")
     # the rooms cut from the bay still open onto it, and it is a rectangle now
     beside = {frozenset((a.a, a.b)) for a in mended.layout.adjacencies if a.contact >= 1.0 - 1e-6}
@@ -990,20 +992,6 @@ def test_the_hub_takes_the_arm_of_a_region_too_narrow_for_its_rooms_and_the_floo
     assert narrow_regions(loose.floors[1].layout, loose.floors[1].graph, kind) == ["bay_4"]
 
 
-def _floor_without_and_with(seed: int, index: int, switch: str) -> tuple[str, Floor, Floor]:
-    """The realism hundred's building ``seed``: its building type and floor ``index`` generated
-    with ``steps.<switch>`` off, then on."""
-    from mansion.building import steps
-    from mansion.eval.realism import bench_case
-
-    kind, floors, description = bench_case(seed)
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(steps, switch, False)
-        before = generate_building(description, building_type=kind, floors=floors, seed=seed).floors[index]
-    after = generate_building(description, building_type=kind, floors=floors, seed=seed).floors[index]
-    return kind, before, after
-
-
 def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_again_without_it() -> None:
     """School 77 of the realism hundred lays its top floor's art room out as an L round a stair,
     4 m wide where an art room asks 5.4 m, after every mend and its relayout; nothing beside it
@@ -1014,7 +1002,8 @@ def test_a_floor_still_left_with_an_optional_room_below_its_width_is_laid_out_ag
     from mansion.eval.realism import bench_case
 
     kind, floors, description = bench_case(77)
-    kind, before, after = _floor_without_and_with(77, 9, "LEAVE_OPTIONAL")
+    _, without, with_ = _without_and_with(77, "LEAVE_OPTIONAL")
+    before, after = without.floors[9], with_.floors[9]
     assert steps.narrow_rooms(before.layout.rooms, kind) == {"art_room"}
     assert steps.narrow_rooms(after.layout.rooms, kind) == set()
     assert not steps.unfit_rooms(after.layout.rooms, after.graph)
@@ -1037,7 +1026,8 @@ def test_a_floor_left_with_a_room_below_its_width_is_laid_out_again_without_an_o
     from mansion.eval.realism import bench_case
 
     kind, floors, description = bench_case(78)
-    kind, before, after = _floor_without_and_with(78, 0, "MAKE_ROOM_OPTIONAL")
+    _, without, with_ = _without_and_with(78, "MAKE_ROOM_OPTIONAL")
+    before, after = without.floors[0], with_.floors[0]
     assert steps.narrow_rooms(before.layout.rooms, kind) == {"sleep_room"}
     assert steps.narrow_rooms(after.layout.rooms, kind) == set()
     assert steps.unfit_rooms(after.layout.rooms, after.graph) == {}

@@ -746,9 +746,9 @@ def _without_optional(
     tries = [spare] if spare else []
     if MAKE_ROOM_OPTIONAL and not spare:
         # no optional room is bad: one of them, the largest first, makes room for those that are
-        first = min(bad, key=lambda r: (r not in {n.id for n in graph.nodes}, r))
-        why = f"room made for {first} ({bad[first]})"
         sizes = {n.id: n.area for n in graph.nodes}
+        first = min(bad, key=lambda r: (r not in sizes, r))
+        why = f"room made for {first} ({bad[first]})"
         tries = [{room: why} for room in sorted(optional, key=lambda r: (-sizes.get(r, 0.0), r))][:MAKE_ROOM_TRIES]
     best: tuple[Floor, tuple[int, int], list[str]] | None = None
     for k, out in enumerate(tries):

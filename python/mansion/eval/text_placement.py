@@ -20,7 +20,7 @@ solver cannot lay out is skipped; only when none can is the plan a failure.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -319,17 +319,23 @@ def _ranking(
     return sorted(range(len(solved)), key=lambda k: (key[k], k))
 
 
-def _centroids(grid: Any) -> dict[str, tuple[float, float]]:
-    """Each room's centroid in a solved floor (solver frame; rooms with no cell left out)."""
+def _room_cells(grid: Any) -> Iterator[tuple[str, Any, Any]]:
+    """Each room of a solved floor with the rows and columns of its cells (empty for a room with
+    no cell)."""
     import numpy as np
 
     labels = grid.array()
-    out: dict[str, tuple[float, float]] = {}
     for k, rid in enumerate(grid.ids):
         r, c = np.nonzero(labels == k)
-        if r.size:
-            out[rid] = (grid.origin[0] + (c.mean() + 0.5) * grid.cell_size, grid.origin[1] + (r.mean() + 0.5) * grid.cell_size)
-    return out
+        yield rid, r, c
+
+
+def _centroids(grid: Any) -> dict[str, tuple[float, float]]:
+    """Each room's centroid in a solved floor (solver frame; rooms with no cell left out)."""
+    return {
+        rid: (grid.origin[0] + (c.mean() + 0.5) * grid.cell_size, grid.origin[1] + (r.mean() + 0.5) * grid.cell_size)
+        for rid, r, c in _room_cells(grid) if r.size
+    }
 
 
 def _room_medians(grids: list[Any]) -> dict[str, tuple[float, float]]:
@@ -382,10 +388,8 @@ def _room_seeds(grid: Any) -> dict[str, tuple[float, float]] | None:
     (a cell of the room even when it is L-shaped); None when a room has no cell."""
     import numpy as np
 
-    labels = grid.array()
     seeds: dict[str, tuple[float, float]] = {}
-    for k, rid in enumerate(grid.ids):
-        r, c = np.nonzero(labels == k)
+    for rid, r, c in _room_cells(grid):
         if r.size == 0:
             return None
         j = int(np.argmin((r - r.mean()) ** 2 + (c - c.mean()) ** 2))
