@@ -871,15 +871,16 @@ def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_
         assert r.is_core or r.area + 1e-6 >= room_design(r.room_type).min_area
 
 
-def _without_and_with(seed: int, switch: str) -> tuple[str, Building, Building]:
+def _without_and_with(seed: int, switch: str, module: str = "steps") -> tuple[str, Building, Building]:
     """The realism hundred's building ``seed``: its building type, and the building generated
-    with ``steps.<switch>`` off, then on."""
-    from mansion.building import steps
+    with ``mansion.building.<module>.<switch>`` off, then on."""
+    import importlib
+
     from mansion.eval.realism import bench_case
 
     kind, floors, description = bench_case(seed)
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(steps, switch, False)
+        mp.setattr(importlib.import_module(f"mansion.building.{module}"), switch, False)
         before = generate_building(description, building_type=kind, floors=floors, seed=seed)
     return kind, before, generate_building(description, building_type=kind, floors=floors, seed=seed)
 
@@ -944,6 +945,37 @@ def test_a_room_below_its_width_with_rooms_cut_from_it_is_laid_out_again_with_th
     region_b = np.isin(grid_before, [ids_b.index(r) for r in cluster])
     region_a = np.isin(grid_after, [ids_a.index(r) for r in cluster])
     assert (region_b == region_a).all()
+
+
+def test_a_dining_zone_no_rows_mend_is_cut_again_by_the_solver() -> None:
+    """The hotel of the realism hundred's seed 68 lays its ground floor's dining zone out as an L
+    round the lobby's corner, its commercial kitchen 3 m wide down the foot (it needs 3.6 m); no
+    mend of rectangles, and no relayout without the optional conference room, brings it to its
+    width. ``families.SOLVED_FAMILIES`` cuts the zone's cells again with the solver: every room of
+    the zone at its width and minimum area, the zone's border and every other room as they were,
+    one note more."""
+    from mansion.building import steps
+
+    kind, before, after = _without_and_with(68, "SOLVED_FAMILIES", module="families")
+    floor, mended = before.floors[0], after.floors[0]
+    assert steps.narrow_rooms(floor.layout.rooms, kind) == {"commercial_kitchen"}
+    assert steps.narrow_rooms(mended.layout.rooms, kind) == set()
+    assert [r.id for r in mended.layout.rooms] == [r.id for r in floor.layout.rooms]
+    assert mended.relaxations == [
+        *floor.relaxations,
+        "dining cut again with commercial_kitchen, restaurant on their own floor (a room of it laid out narrower "
+        "than its clear width)",
+    ]
+    check_building(after)
+    zone = ["dining", "commercial_kitchen", "restaurant"]
+    for rid in zone:
+        assert mended.layout.room(rid).area >= mended.graph.node(rid).min_area  # type: ignore[operator]
+    # only the zone's rooms changed; the other floors are the same
+    grid_before, grid_after = floor.layout.grid.array(), mended.layout.grid.array()
+    ids = list(floor.layout.grid.ids)
+    changed = {ids[k] for k in np.unique(grid_before[grid_before != grid_after])}
+    assert changed <= set(zone) and "commercial_kitchen" in changed
+    assert [f.layout for f in after.floors[1:]] == [f.layout for f in before.floors[1:]]
 
 
 def test_the_hub_takes_the_arm_of_a_region_too_narrow_for_its_rooms_and_the_floors_above_follow() -> None:

@@ -1,13 +1,16 @@
-"""Families laid out again as a row along a side (mansion.building.families)."""
+"""Families laid out again as a row along a side (mansion.building.families), or cut again by the
+solver on their own cells (mansion.building.family_solve)."""
 
 from __future__ import annotations
 
+import pytest
 from test_merge import graph_of, layout_of
 
 from mansion.building.checks import check_graph
 from mansion.building.families import relay_families, touching
 from mansion.building.merge import grid_adjacencies, mask_defects
 from mansion.building.steps import narrow_rooms
+from mansion.models.room_design import needed_width
 
 CELL = 0.5
 
@@ -148,6 +151,83 @@ def test_a_bay_too_tight_for_its_rooms_is_laid_out_again_without_the_smallest_it
     kept, same, none = relay_families(layout, graph, "office", keep=["private_office_2"], drop=True)
     assert all("private_office_2 dropped" not in n for n in none)
 
+
+
+# A hotel's dining zone (D the dining hall, its head; R the restaurant; K the commercial kitchen)
+# off the lobby L, the hub: the zone is an L round the lobby's corner, and its kitchen runs 3 m
+# wide down the foot of the L where it needs 3.6 m. No band of rooms along a side holds the
+# three; the solver, cutting the zone's cells again, puts the dining hall in the foot by the lobby
+# and the kitchen 4 m wide above it.
+DINING = "\n".join(
+    ["KKKKKKKKKDDDDDDDDDDDDLLL"] * 3 + ["KKKKKKRRRRRRRRRRRRRRRLLL"] * 11 + ["KKKKKKLLLLLLLLLLLLLLLLLL"] * 3
+) + "\n"
+DINING_NAMES = {
+    "L": ("lobby", "main", "lobby", 15.0),
+    "D": ("dining", "Entities", "corridor", 4.0),
+    "R": ("restaurant", "Entities", "restaurant", 40.0),
+    "K": ("commercial_kitchen", "Entities", "commercial_kitchen", 18.0),
+}
+DINING_EDGES = [("lobby", "dining"), ("dining", "restaurant"), ("dining", "commercial_kitchen")]
+#: The areas the floor planned (the zone holds less than they ask: the floor was tight).
+DINING_PLANNED = {"lobby": 24.0, "dining": 8.8, "restaurant": 55.9, "commercial_kitchen": 23.4}
+
+
+def _dining():  # type: ignore[no-untyped-def]
+    """The dining zone's layout and graph, the rooms' planned areas and widths as a generated
+    floor's planner sets them (``clear_width`` from the design table)."""
+    layout, graph = layout_of(DINING, DINING_NAMES), graph_of(DINING_NAMES, DINING_EDGES)
+    layout = layout.model_copy(update={
+        "rooms": [r.model_copy(update={"target_area": DINING_PLANNED[r.id]}) for r in layout.rooms],
+    })
+    graph = graph.model_copy(update={"nodes": [
+        n.model_copy(update={
+            "area": DINING_PLANNED[n.id], "clear_width": needed_width(n.room_type, "hotel"), "min_width": 1.5,
+            "max_aspect": None if n.type == "main" or n.room_type == "corridor" else 3.0,
+        })
+        for n in graph.nodes
+    ]})
+    return layout, graph
+
+
+def test_a_family_no_rows_mend_is_cut_again_by_the_solver_on_its_own_cells() -> None:
+    from mansion.building import families
+    from mansion.building.steps import solver_options
+
+    layout, graph = _dining()
+    assert narrow_rooms(layout.rooms, "hotel") == {"commercial_kitchen"}
+    # rows of rectangles find nothing, and without the floor's solver options nothing more is tried
+    kept, same, none = relay_families(layout, graph, "hotel")
+    assert none == [] and kept == layout and same == graph
+    relaid, same, notes = relay_families(layout, graph, "hotel", solver=solver_options())
+    assert same == graph
+    assert notes == [
+        "dining cut again with commercial_kitchen, restaurant on their own floor (a room of it laid out "
+        "narrower than its clear width)"
+    ]
+    assert narrow_rooms(relaid.rooms, "hotel") == set()
+    for rid, _, _, least in DINING_NAMES.values():
+        assert _defects(relaid, rid, "hotel") == set()
+        assert relaid.room(rid).area >= least
+        assert (relaid.grid.array() == relaid.grid.ids.index(rid)).any()
+    # every relation keeps a door's wall, the dining hall's to the lobby too; the lobby keeps its
+    # cells, so no wall of the zone's border moves
+    for a, b in DINING_EDGES:
+        assert relaid.adjacency(a, b).longest >= 1.0  # type: ignore[union-attr]
+    lobby = layout.grid.ids.index("lobby")
+    assert ((layout.grid.array() == lobby) == (relaid.grid.array() == lobby)).all()
+    assert relaid.adjacencies == grid_adjacencies(relaid.grid.array(), relaid.grid.ids, CELL)
+    # the kitchen is a rectangle 4 m wide
+    kitchen = relaid.grid.array() == relaid.grid.ids.index("commercial_kitchen")
+    rows, cols = kitchen.any(axis=1).sum(), kitchen.any(axis=0).sum()
+    assert kitchen.sum() == rows * cols and min(rows, cols) * CELL >= 3.6
+    # the same every time (the solver's seeds are fixed), and nothing left to mend after it
+    assert relay_families(layout, graph, "hotel", solver=solver_options())[0] == relaid
+    again, _, none = relay_families(relaid, graph, "hotel", solver=solver_options())
+    assert none == [] and again == relaid
+    # the switch off, nothing
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(families, "SOLVED_FAMILIES", False)
+        assert relay_families(layout, graph, "hotel", solver=solver_options())[2] == []
 
 def _hall() -> str:
     """A reading hall H 8 m × 12 m, the hub, with two study rooms S and T in its middle (the hall

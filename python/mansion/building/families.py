@@ -47,22 +47,24 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Iterable
+from typing import Any
 
 import numpy as np
 
+from mansion.building.family_solve import solved_family
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.outlines import shape_measure
 from mansion.building.recut import (
     _box_round, _least, _redrawn, _wide_rectangle, area_shares, band_columns, band_shares, cluster_cells,
-    edge_grown, in_a_row, judged_score,
+    edge_grown, family_rules, in_a_row, judged_score,
 )
 from mansion.models.graph import RoomGraph
 from mansion.models.layout import FloorLayout
 from mansion.models.room_design import needed_width
 from mansion.models.room_shape import EPS
 
-__all__ = ["ALL_ORDERS", "MAX_FAMILY", "relay_families", "touching"]
+__all__ = ["ALL_ORDERS", "MAX_FAMILY", "SOLVED_FAMILIES", "relay_families", "touching"]
 
 #: Rooms cut from a head, at most, for its family to be laid out again.
 MAX_FAMILY = 6
@@ -71,6 +73,11 @@ MAX_FAMILY = 6
 #: 41 s for one room fewer below its width (80 against 81).
 ALL_ORDERS = 3
 
+
+#: Whether a family that no rows of rectangles mend is cut again by the solver on the cells it
+#: holds (:func:`mansion.building.family_solve.solved_family`): a hotel's dining zone, an L round
+#: the lobby's corner, whose kitchen no band along a side makes 3.6 m wide.
+SOLVED_FAMILIES = True
 
 #: How the rooms cut from the head lie after a re-layout, in its note, by their rows.
 ROWS = {1: "in a row along it", 2: "in two rows, along opposite sides of it"}
@@ -85,13 +92,17 @@ def relay_families(
     min_contact: float = 1.0,
     keep: Iterable[str] = (),
     drop: bool = False,
+    solver: dict[str, Any] | None = None,
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """``layout`` and ``graph`` with each family holding a room below its clear width laid out
     again where the module's rules allow, heads in the order of their ids. With ``drop`` (a
     second pass, for the families the first could not mend), a family too tight for its rooms
     is laid out again without one of them instead, the smallest that lets it be, dropped with its
     floor given to the head where :mod:`mansion.building.merge` would drop it (never one of
-    ``keep``, the rooms the description asked for). With a relaxation note per family."""
+    ``keep``, the rooms the description asked for). ``solver``: the floor's keyword arguments of
+    :func:`mansion.solve_floor`; with them (and :data:`SOLVED_FAMILIES`), a family no rows of
+    rectangles mend is cut again by the solver on its own cells. With a relaxation note per
+    family."""
     notes: list[str] = []
     kept = frozenset(keep)
     parent = cut_parents(graph)
@@ -126,6 +137,13 @@ def relay_families(
             if found is not None:
                 layout = found[1]
                 notes.append(f"{head} laid out again with {', '.join(members)} {ROWS[found[2]]} ({WHY})")
+            elif SOLVED_FAMILIES and solver is not None:
+                # no rows of rectangles pass: the solver cuts the family's cells again
+                # (mansion.building.family_solve)
+                solved = solved_family(layout, graph, head, members, building_type, min_contact, solver)
+                if solved is not None:
+                    layout = solved[1]
+                    notes.append(f"{head} cut again with {', '.join(members)} on their own floor ({WHY})")
             continue
         # too tight for all its rooms (the pass without drops found no re-layout): without the
         # smallest room whose going lets it be laid out, dropped as mansion.building.merge drops
@@ -188,10 +206,7 @@ def _relaid_family(
     family = [head, *members]
     labels, cell, keys, region, keep, passable = cluster_cells(layout, graph, family)
     rooms = {r.id: r for r in layout.rooms}
-    nodes = {n.id: n for n in graph.nodes}
-    before = {rid: mask_defects(labels == keys[rid], rooms[rid].room_type, building_type, cell) for rid in family}
-    least = {rid: _least(nodes[rid]) for rid in family}
-    targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in family}
+    before, least, targets = family_rules(layout, graph, family, building_type, labels, keys)
     width = {m: needed_width(rooms[m].room_type, building_type) for m in members}
     head_width = needed_width(rooms[head].room_type, building_type)
     # the widths the rooms at their width now must keep (0 for those below it): the bands too

@@ -1104,7 +1104,7 @@ def _relaid_cluster(
     least = {rid: nodes[rid].min_area or 0.0 for rid in cluster}
     targets = {rid: max(rooms[rid].target_area, least[rid]) for rid in cluster}
     depth = max(3, int(np.ceil(room_design(rooms[head].room_type).min_width / cell - 1e-6)))
-    best: tuple[float, FloorLayout] | None = None
+    best: tuple[float, np.ndarray] | None = None
     # the strip along each of the four sides: the grid turned so that it lies along the bottom
     for turn in range(4):
         view = np.rot90(region, turn)
@@ -1148,6 +1148,21 @@ def cluster_cells(
     keep = _kept_walls(layout, graph, set(cluster))
     passable = {rid: _passable(labels == keys[rid]) for rid in cluster}
     return labels, layout.grid.cell_size, keys, region, keep, passable
+
+
+def family_rules(
+    layout: FloorLayout, graph: RoomGraph, family: list[str], building_type: str | None,
+    labels: np.ndarray, keys: dict[str, int],
+) -> tuple[dict[str, set[str]], dict[str, float], dict[str, float]]:
+    """What a family re-laid is judged against (:func:`judged_score`, ``own``): each room's
+    defects as it lies now (on ``labels``, its label in ``keys``), its minimum area, and its
+    planned area (at least that minimum)."""
+    rooms = {r.id: r for r in layout.rooms}
+    nodes = {n.id: n for n in graph.nodes}
+    cell = layout.grid.cell_size
+    before = {rid: mask_defects(labels == keys[rid], rooms[rid].room_type, building_type, cell) for rid in family}
+    least = {rid: _least(nodes[rid]) for rid in family}
+    return before, least, {rid: max(rooms[rid].target_area, least[rid]) for rid in family}
 
 
 def band_shares(

@@ -1163,7 +1163,7 @@ def _mended_floor(
     )
     # then, in the order of NARROW_MENDS, the mends of what is still below its width
     layout, graph, narrowed = mend_narrow(
-        layout, graph, program, keep=asked, min_contact=solver.get("min_contact", 1.0),
+        layout, graph, program, keep=asked, min_contact=solver.get("min_contact", 1.0), solver=solver,
     )
     mended += narrowed
     # last, passages 0.5 m wide (left by rounds laid out at 1 m rules) widened from a neighbour
@@ -1236,6 +1236,7 @@ def _optional_rooms(
 
 def mend_narrow(
     layout: FloorLayout, graph: RoomGraph, program: BuildingProgram, keep: set[str], min_contact: float,
+    solver: dict[str, Any] | None = None,
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """``layout`` and ``graph`` after the mends of :data:`NARROW_MENDS`, in that order, of the
     rooms still below their clear width once they were cut again and handed their strips off
@@ -1253,7 +1254,7 @@ def mend_narrow(
         "sides": lambda lay, g: (widen_sides(lay, g, kind, min_contact=min_contact, same_region=carried), g, []),
         # a region and the rooms cut from it, one of them still below its width, laid out
         # again as a row along one side with the region's room taking the rest
-        "families": lambda lay, g: relay_families(lay, g, kind, min_contact=min_contact, keep=keep),
+        "families": lambda lay, g: relay_families(lay, g, kind, min_contact=min_contact, keep=keep, solver=solver),
         # a room still below its width and a room beside it cut again together, the wall
         # between them drawn again straight or with one corner (mansion.building.pairs)
         "pairs": lambda lay, g: (recut_pairs(lay, g, kind, min_contact=min_contact, same_region=carried), g, []),
