@@ -1242,7 +1242,8 @@ def mend_narrow(
     rooms still below their clear width once they were cut again and handed their strips off
     (the merges and stores also skipped when :data:`MERGE_NARROW` or :data:`STORE_POCKETS` is
     off); with the relaxation notes they wrote. ``keep``: the rooms the description asked
-    for, never dropped."""
+    for, never dropped. ``solver``: the floor's keyword arguments of :func:`mansion.solve_floor`,
+    with which a family no rows mend is cut again by the solver (``families.SOLVED_FAMILIES``)."""
     kind, carried = program.building_type, program.load_bearing_walls
 
     def narrow_of(lay: FloorLayout, g: RoomGraph) -> dict[str, str]:
