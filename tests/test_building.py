@@ -975,7 +975,50 @@ def test_a_dining_zone_no_rows_mend_is_cut_again_by_the_solver() -> None:
     ids = list(floor.layout.grid.ids)
     changed = {ids[k] for k in np.unique(grid_before[grid_before != grid_after])}
     assert changed <= set(zone) and "commercial_kitchen" in changed
-    assert [f.layout for f in after.floors[1:]] == [f.layout for f in before.floors[1:]]
+    assert [(f.layout.rooms, f.layout.grid) for f in after.floors[1:]] == [
+        (f.layout.rooms, f.layout.grid) for f in before.floors[1:]
+    ]
+
+
+def test_a_floor_still_left_with_a_bay_below_its_width_cuts_the_bay_again_without_one_of_its_rooms() -> None:
+    """Office 47 of the realism hundred: its third floor (and the sixth, which repeats it) has two
+    open-office bays below their 4 m, each with five rooms cut from it, and one meeting room to
+    spare between them. The dissolve gives the second bay the floor of its meeting room; the
+    first, an L on a floor that carries walls, no rows of rectangles, relayout or dissolve mend.
+    ``steps.LAST_FAMILIES``, once everything else has had its turn, cuts its family again with
+    the solver without its smallest room whose going lets it be (a private office; the meeting
+    room, now the floor's last, may not go): every room of the floor at its width and area, the
+    bay's region and every other family as they were, the room dropped recorded."""
+    from mansion.building import steps
+
+    kind, before, after = _without_and_with(47, "LAST_FAMILIES")
+    check_building(after)
+    for index in (3, 6):
+        floor, mended = before.floors[index], after.floors[index]
+        assert steps.narrow_rooms(floor.layout.rooms, kind) == {"bay_1"}
+        assert steps.narrow_rooms(mended.layout.rooms, kind) == set()
+        assert not steps.unfit_rooms(mended.layout.rooms, mended.graph)
+        assert mended.relaxations == [
+            *floor.relaxations,
+            "private_office_1 dropped, its floor given to bay_1; bay_1 cut again with meeting_room_1, "
+            "phone_booth_1, print_room_1, private_office_2 on their own floor (a room of it laid out narrower "
+            "than its clear width)",
+        ]
+        assert {n.id for n in mended.graph.nodes} == {n.id for n in floor.graph.nodes} - {"private_office_1"}
+        assert [c.id for c in mended.room_cards] == [n.id for n in mended.graph.nodes]
+        # the bay's family keeps the cells it held; the walls carried up stay where they were
+        grid_before, grid_after = floor.layout.grid.array(), mended.layout.grid.array()
+        ids_b, ids_a = list(floor.layout.grid.ids), list(mended.layout.grid.ids)
+        family = ["bay_1", "meeting_room_1", "phone_booth_1", "print_room_1", "private_office_2"]
+        region_b = np.isin(grid_before, [ids_b.index(r) for r in [*family, "private_office_1"]])
+        assert (region_b == np.isin(grid_after, [ids_a.index(r) for r in family])).all()
+        outside = ~region_b
+        assert all(ids_b[grid_before[r, c]] == ids_a[grid_after[r, c]] for r, c in zip(*np.nonzero(outside & (grid_before >= 0))))
+        assert mended.carried_walls == floor.carried_walls
+    # the other floors are the same
+    assert [(f.layout.rooms, f.layout.grid) for i, f in enumerate(after.floors) if i not in (3, 6)] == [
+        (f.layout.rooms, f.layout.grid) for i, f in enumerate(before.floors) if i not in (3, 6)
+    ]
 
 
 def test_the_hub_takes_the_arm_of_a_region_too_narrow_for_its_rooms_and_the_floors_above_follow() -> None:

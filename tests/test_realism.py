@@ -401,13 +401,15 @@ def test_rooms_below_their_minimums_are_named_and_the_reference_plans_only_count
 
 def test_cli_realism_names_the_rooms_below_their_minimums(tmp_path: Path) -> None:
     """Every room the figures count as below its area or width is named in the JSON and on the
-    terminal by building seed, floor and room id (hotel 68's commercial kitchen, 3 m wide beside a
-    restaurant at its minimum where a commercial kitchen asks 3.6 m, where the layout is left so)."""
-    r = runner.invoke(app, ["eval", "realism", "--generate", "1", "--seed", "68", "--json", str(tmp_path / "r.json")])
+    terminal by building seed, floor and room id (kindergarten 106 of the second hundred, where
+    the layout is left so: its play hall, the ground floor's hub, narrower than its 4.5 m, and a
+    group room 0.75 m² short of its 30 m² upstairs)."""
+    r = runner.invoke(app, ["eval", "realism", "--generate", "1", "--seed", "106", "--json", str(tmp_path / "r.json")])
     assert r.exit_code == 0, r.output
     overall = json.loads((tmp_path / "r.json").read_text())["overall"]
     named = overall["undersized_rooms"]
     assert len(named) == sum(overall["undersized_types"].values())
-    assert "seed 68, floor 0, commercial_kitchen (commercial_kitchen): narrower than 3.6 m" in named
+    assert "seed 106, floor 0, play_hall (play_hall): narrower than 4.5 m" in named
+    assert "seed 106, floor 1, group_room (group_room): 29.2 m² of its 30 m²" in named
     assert f"Rooms below their minimum area or width ({len(named)}):" in r.output
     assert all(line.split(", ")[-1].split(" (")[0] in r.output for line in named)

@@ -51,7 +51,7 @@ from typing import Any
 
 import numpy as np
 
-from mansion.building.family_solve import solved_family
+from mansion.building.family_solve import SOLVE_SEEDS, solved_family
 from mansion.building.load_bearing import cut_parents
 from mansion.building.merge import _may_drop, _merged_graph, _merged_layout, mask_defects
 from mansion.building.outlines import shape_measure
@@ -93,6 +93,7 @@ def relay_families(
     keep: Iterable[str] = (),
     drop: bool = False,
     solver: dict[str, Any] | None = None,
+    seeds: int = SOLVE_SEEDS,
 ) -> tuple[FloorLayout, RoomGraph, list[str]]:
     """``layout`` and ``graph`` with each family holding a room below its clear width laid out
     again where the module's rules allow, heads in the order of their ids. With ``drop`` (a
@@ -101,8 +102,8 @@ def relay_families(
     floor given to the head where :mod:`mansion.building.merge` would drop it (never one of
     ``keep``, the rooms the description asked for). ``solver``: the floor's keyword arguments of
     :func:`mansion.solve_floor`; with them (and :data:`SOLVED_FAMILIES`), a family no rows of
-    rectangles mend is cut again by the solver on its own cells. With a relaxation note per
-    family."""
+    rectangles mend is cut again by the solver on its own cells, under ``seeds`` of its random
+    seeds. With a relaxation note per family."""
     notes: list[str] = []
     kept = frozenset(keep)
     parent = cut_parents(graph)
@@ -140,7 +141,7 @@ def relay_families(
             elif SOLVED_FAMILIES and solver is not None:
                 # no rows of rectangles pass: the solver cuts the family's cells again
                 # (mansion.building.family_solve)
-                solved = solved_family(layout, graph, head, members, building_type, min_contact, solver)
+                solved = solved_family(layout, graph, head, members, building_type, min_contact, solver, seeds)
                 if solved is not None:
                     layout = solved[1]
                     notes.append(f"{head} cut again with {', '.join(members)} on their own floor ({WHY})")
@@ -153,17 +154,18 @@ def relay_families(
             if not _may_drop(nodes[gone], nodes[head], graph, parent, kept):
                 continue
             fewer = _merged_graph(graph, gone, head)
-            found = _relaid_family(
-                _merged_layout(layout, gone, head), fewer, head, [m for m in members if m != gone],
-                building_type, min_contact,
-            )
+            merged = _merged_layout(layout, gone, head)
+            rest = [m for m in members if m != gone]
+            found = _relaid_family(merged, fewer, head, rest, building_type, min_contact)
+            how = None if found is None else f"laid out again with {', '.join(rest)} {ROWS[found[2]]}"
+            if found is None and SOLVED_FAMILIES and solver is not None:
+                # or cut again by the solver without it (mansion.building.family_solve)
+                solved = solved_family(merged, fewer, head, rest, building_type, min_contact, solver, seeds)
+                if solved is not None:
+                    found, how = (*solved, 0), f"cut again with {', '.join(rest)} on their own floor"
             if found is not None:
                 layout, graph = found[1], fewer
-                rest = ", ".join(m for m in members if m != gone)
-                notes.append(
-                    f"{gone} dropped, its floor given to {head}; {head} laid out again with {rest} "
-                    f"{ROWS[found[2]]} ({WHY})"
-                )
+                notes.append(f"{gone} dropped, its floor given to {head}; {head} {how} ({WHY})")
                 break
     return layout, graph, notes
 

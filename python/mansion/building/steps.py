@@ -409,6 +409,21 @@ LAST_PAIRS = True
 #: the width mends had their turn.
 LATE_CLUSTERS = True
 
+#: Whether a floor that every mend and relayout still leaves with a room below its clear width
+#: has the families holding such rooms cut again by the solver under :data:`LAST_FAMILY_SEEDS`
+#: seeds, then laid out again without one of their rooms (the smallest that lets the family be,
+#: as the "drops" of :data:`NARROW_MENDS`), by rows of rectangles or by the solver
+#: (:func:`_families_last`, :func:`mansion.building.families.relay_families` with the floor's
+#: solver). Last, so that no relayout that keeps every room is passed over for a room dropped, and
+#: after the dissolve: office 47's third floor has two bays below their width and one meeting room
+#: to spare between them; the dissolve gives the second bay the meeting room's floor, and the
+#: first, after it, drops a private office and is cut again.
+LAST_FAMILIES = True
+#: The solver's random seeds a family is cut again under by :data:`LAST_FAMILIES` (the few
+#: families still below their width by then; ``families.relay_families``' own default is one):
+#: office 47's first bay without its private office passes under the sixth.
+LAST_FAMILY_SEEDS = 8
+
 #: Whether a room the program can spare that every mend, the dissolve and :data:`LAST_PAIRS` leave
 #: below its minimum area or clear width, and that no room beside it may take, is made a store
 #: where it is a sound one (:func:`mansion.building.stores.store_spare_rooms`): an office's third
@@ -705,7 +720,7 @@ def solve_building_floor(
         program, index, graph, below, seed, solver, seed_planner, description, drop_widths,
     )
     if not again or not relayouts:
-        return floor
+        return _families_last(program, floor, solver)
     left = _bad_counts(floor.layout, floor.graph, program.building_type)
     quick = _relayout_options(solver)
     more = SMALL_FLOOR_RELAYOUTS if floor.footprint.area <= SMALL_FLOOR_AREA + 1e-9 else 0
@@ -725,7 +740,32 @@ def solve_building_floor(
     if LEAVE_OPTIONAL and left != (0, 0):
         floor = _without_optional(program, index, graph, below, seed, quick, seed_planner, description,
                                   drop_widths, floor, left)
-    return floor
+    return _families_last(program, floor, solver)
+
+
+def _families_last(program: BuildingProgram, floor: Floor, solver: dict[str, Any]) -> Floor:
+    """``floor`` with the families that hold a room still below its clear width cut again by the
+    solver, or laid out again without one of their rooms (:data:`LAST_FAMILIES`), each recorded;
+    ``floor`` itself when there are none or none passes (or the floor's solve has no repair)."""
+    settings = solver.get("settings")
+    kind = program.building_type
+    if not LAST_FAMILIES or settings is None or not settings.repair or not narrow_rooms(floor.layout.rooms, kind):
+        return floor
+    layout, graph, notes = floor.layout, floor.graph, []
+    for drop in (False, True):
+        layout, graph, done = relay_families(
+            layout, graph, kind, min_contact=solver.get("min_contact", 1.0), keep=_asked(program), drop=drop,
+            solver=solver, seeds=LAST_FAMILY_SEEDS,
+        )
+        notes += done
+    if not notes:
+        return floor
+    kept = {n.id for n in graph.nodes}
+    return floor.model_copy(update={
+        "layout": layout, "graph": graph, "relaxations": [*floor.relaxations, *notes],
+        "room_cards": [card for card in floor.room_cards if card.id in kept],
+        "carried_walls": first_round_walls(layout, graph) if program.load_bearing_walls else [],
+    })
 
 
 def _without_optional(
