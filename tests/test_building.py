@@ -575,8 +575,8 @@ def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow(
     side and the open offices' bands took their full width) and none with it, with no more
     rooms below their area or slivers. Judged with the later mends of rooms below their width
     that redraw whole families or clusters or split arms off (``steps.NARROW_MENDS``,
-    ``steps.LAST_PAIRS``, ``recut.DEEP_CLUSTERS``, ``steps.LATE_CLUSTERS``) turned off: they
-    mend those two open offices too."""
+    ``steps.LAST_PAIRS``, ``recut.DEEP_CLUSTERS``, ``steps.LATE_CLUSTERS``,
+    ``steps.LAST_FAMILIES``) turned off: they mend those two open offices too."""
     from mansion.building import recut, steps
     from mansion.eval.realism import bench_case, building_rooms, summarise
 
@@ -587,6 +587,7 @@ def test_rounds_that_first_try_their_rooms_full_widths_leave_fewer_rooms_narrow(
         mp.setattr(steps, "LAST_PAIRS", False)
         mp.setattr(recut, "DEEP_CLUSTERS", False)
         mp.setattr(steps, "LATE_CLUSTERS", False)
+        mp.setattr(steps, "LAST_FAMILIES", False)
         wide = summarise(building_rooms(generate_building(description, building_type=kind, floors=floors, seed=117)))
         mp.setattr(steps, "WIDE_RETRIES", 0)
         capped = summarise(building_rooms(generate_building(description, building_type=kind, floors=floors, seed=117)))
@@ -871,18 +872,25 @@ def test_a_room_still_below_its_width_is_cut_again_with_a_room_beside_it_by_any_
         assert r.is_core or r.area + 1e-6 >= room_design(r.room_type).min_area
 
 
-def _without_and_with(seed: int, switch: str, module: str = "steps") -> tuple[str, Building, Building]:
+def _without_and_with(
+    seed: int, switch: str, module: str = "steps", later: tuple[str, ...] = (),
+) -> tuple[str, Building, Building]:
     """The realism hundred's building ``seed``: its building type, and the building generated
-    with ``mansion.building.<module>.<switch>`` off, then on."""
+    with ``mansion.building.<module>.<switch>`` off, then on; ``later``: switches of ``steps``
+    off in both (mends after the one tested that would mend the same room)."""
     import importlib
 
+    from mansion.building import steps
     from mansion.eval.realism import bench_case
 
     kind, floors, description = bench_case(seed)
     with pytest.MonkeyPatch.context() as mp:
+        for name in later:
+            mp.setattr(steps, name, False)
         mp.setattr(importlib.import_module(f"mansion.building.{module}"), switch, False)
         before = generate_building(description, building_type=kind, floors=floors, seed=seed)
-    return kind, before, generate_building(description, building_type=kind, floors=floors, seed=seed)
+        mp.setattr(importlib.import_module(f"mansion.building.{module}"), switch, True)
+        return kind, before, generate_building(description, building_type=kind, floors=floors, seed=seed)
 
 
 def _mended_keeping_the_program(floor: Floor, after: Building, index: int, room: str) -> Floor:
@@ -917,11 +925,12 @@ def test_a_room_below_its_width_with_rooms_cut_from_it_is_laid_out_again_with_th
     relayout (the head a strip of its own clear width) finds nothing: the bay needs the region's
     depth. ``steps.LATE_CLUSTERS`` lays the bay out again with its rooms, its strip as deep as it
     takes and the rooms in a row along one end, each at least its clear width across the row;
-    nothing of the program changes and no room gains a defect."""
+    nothing of the program changes and no room gains a defect. (``steps.LAST_FAMILIES``, which
+    would mend the bay last, is off in both.)"""
     from mansion.building import recut, steps
     from mansion.building.load_bearing import cut_parents
 
-    kind, before, after = _without_and_with(61, "LATE_CLUSTERS")
+    kind, before, after = _without_and_with(61, "LATE_CLUSTERS", later=("LAST_FAMILIES",))
     floor = before.floors[1]
     assert steps.narrow_rooms(floor.layout.rooms, kind) == {"bay_1"}
     parent = cut_parents(floor.graph)

@@ -156,6 +156,7 @@ def test_generated_floors_record_each_room_dissolved_and_keep_the_rest() -> None
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(steps, "LAST_PAIRS", False)
         mp.setattr(steps, "SPARE_STORES", False)
+        mp.setattr(steps, "LAST_FAMILIES", False)
         on = generate_building(text, building_type=kind, floors=floors, seed=61, relayouts=0)
         mp.setattr(steps, "DISSOLVE", False)
         off = generate_building(text, building_type=kind, floors=floors, seed=61, relayouts=0)
@@ -198,9 +199,12 @@ def test_a_floor_that_carries_walls_is_laid_out_again_and_the_floors_above_follo
     from mansion.building.steps import floor_footprint
 
     # apartment block 116: its ground floor keeps a flat's living bay below its width; the block's
-    # walls carry the floors above, and the floor is laid out again before they are solved
+    # walls carry the floors above, and the floor is laid out again before they are solved (the
+    # last families, which would drop a children's room to mend it, off without the relayout)
     kind, floors, text = bench_case(116)
-    once = generate_building(text, building_type=kind, floors=floors, seed=116, relayouts=0)
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(steps, "LAST_FAMILIES", False)
+        once = generate_building(text, building_type=kind, floors=floors, seed=116, relayouts=0)
     again = generate_building(text, building_type=kind, floors=floors, seed=116, relayouts=1)
     assert again.program.load_bearing_walls
     assert narrow_rooms(once.floors[0].layout.rooms, kind)
