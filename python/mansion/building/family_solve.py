@@ -71,7 +71,7 @@ def solved_family(
     nodes = {n.id: n for n in graph.nodes}
     before, least, targets = family_rules(layout, graph, family, building_type, labels, keys)
     # each room's target scaled to fill the family's cells (the solver refuses a program larger
-    # than its region); a hair under, for the sum's rounding
+    # than its region)
     shares = area_shares(float(region.sum()) * cell * cell, family, least, targets)
     if shares is None:
         return None
@@ -79,6 +79,7 @@ def solved_family(
         nodes=[
             nodes[rid].model_copy(update={
                 "type": "main" if rid == head else "Entities" if nodes[rid].type == "main" else nodes[rid].type,
+                # a hair under the share, for the sum's rounding
                 "area": shares[rid] * (1.0 - 1e-6),
             })
             for rid in family

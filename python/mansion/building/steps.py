@@ -829,8 +829,8 @@ SMALL_FLOOR_RELAYOUTS = 3
 
 #: Whether a floor its relayouts still leave with rooms below their minimums, none of them one of
 #: its template's optional rooms, is laid out again without one of those (the largest first, up
-#: to :data:`MAKE_ROOM_TRIES`), kept as a relayout is: a hotel's conference room makes room for
-#: its commercial kitchen.
+#: to :data:`MAKE_ROOM_TRIES`), kept as a relayout is: a kindergarten's staff office makes room
+#: for its sleep room.
 MAKE_ROOM_OPTIONAL = True
 MAKE_ROOM_TRIES = 2
 SMALL_FLOOR_AREA = 120.0
