@@ -1028,6 +1028,15 @@ def test_a_floor_still_left_with_a_bay_below_its_width_cuts_the_bay_again_withou
     assert [(f.layout.rooms, f.layout.grid) for i, f in enumerate(after.floors) if i not in (3, 6)] == [
         (f.layout.rooms, f.layout.grid) for i, f in enumerate(before.floors) if i not in (3, 6)
     ]
+    # a floor that records the description's position words checks them again on the rooms as
+    # they now lie (the meeting room stays in the floor's south-east corner)
+    from mansion.models.building import PositionWord
+
+    stale = before.floors[3].model_copy(update={"position_words": [PositionWord(room="bay_1", statement="stale", honoured=False)]})
+    described = "An office. The meeting room is in the south-east corner."
+    again = steps._families_last(before.program, stale, steps.solver_options(), stale.graph, described)
+    assert steps.narrow_rooms(again.layout.rooms, kind) == set()
+    assert [(w.room, w.honoured) for w in again.position_words] == [("meeting_room_1", True)]
 
 
 def test_the_hub_takes_the_arm_of_a_region_too_narrow_for_its_rooms_and_the_floors_above_follow() -> None:

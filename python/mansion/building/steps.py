@@ -720,7 +720,7 @@ def solve_building_floor(
         program, index, graph, below, seed, solver, seed_planner, description, drop_widths,
     )
     if not again or not relayouts:
-        return _families_last(program, floor, solver)
+        return _families_last(program, floor, solver, graph, description)
     left = _bad_counts(floor.layout, floor.graph, program.building_type)
     quick = _relayout_options(solver)
     more = SMALL_FLOOR_RELAYOUTS if floor.footprint.area <= SMALL_FLOOR_AREA + 1e-9 else 0
@@ -740,13 +740,17 @@ def solve_building_floor(
     if LEAVE_OPTIONAL and left != (0, 0):
         floor = _without_optional(program, index, graph, below, seed, quick, seed_planner, description,
                                   drop_widths, floor, left)
-    return _families_last(program, floor, solver)
+    return _families_last(program, floor, solver, graph, description)
 
 
-def _families_last(program: BuildingProgram, floor: Floor, solver: dict[str, Any]) -> Floor:
+def _families_last(
+    program: BuildingProgram, floor: Floor, solver: dict[str, Any], planned: RoomGraph, description: str | None,
+) -> Floor:
     """``floor`` with the families that hold a room still below its clear width cut again by the
     solver, or laid out again without one of their rooms (:data:`LAST_FAMILIES`), each recorded;
-    ``floor`` itself when there are none or none passes (or the floor's solve has no repair)."""
+    ``floor`` itself when there are none or none passes (or the floor's solve has no repair).
+    The description's position words the floor records are checked again on the rooms as they
+    now lie (``planned``: the graph the floor was planned with, which they were read against)."""
     settings = solver.get("settings")
     kind = program.building_type
     if not LAST_FAMILIES or settings is None or not settings.repair or not narrow_rooms(floor.layout.rooms, kind):
@@ -761,10 +765,20 @@ def _families_last(program: BuildingProgram, floor: Floor, solver: dict[str, Any
     if not notes:
         return floor
     kept = {n.id for n in graph.nodes}
+    words = floor.position_words
+    if words and description:
+        from mansion.floorplan.text_seeds import position_checks, text_seed_planner
+
+        text_planner = text_seed_planner(description, planned, floor.footprint, solver.get("cell_size", 0.5))
+        if text_planner is not None:
+            centroids = {room.id: (room.centroid[0], room.centroid[1]) for room in layout.rooms}
+            checks = position_checks(text_planner, centroids)
+            words = [PositionWord(room=c.room, statement=c.text, honoured=c.honoured) for c in checks]
     return floor.model_copy(update={
         "layout": layout, "graph": graph, "relaxations": [*floor.relaxations, *notes],
         "room_cards": [card for card in floor.room_cards if card.id in kept],
         "carried_walls": first_round_walls(layout, graph) if program.load_bearing_walls else [],
+        "position_words": words,
     })
 
 
