@@ -157,14 +157,14 @@ def relay_families(
             merged = _merged_layout(layout, gone, head)
             rest = [m for m in members if m != gone]
             found = _relaid_family(merged, fewer, head, rest, building_type, min_contact)
-            how = None if found is None else f"laid out again with {', '.join(rest)} {ROWS[found[2]]}"
-            if found is None and SOLVED_FAMILIES and solver is not None:
+            relaid, how = (None, "") if found is None else (found[1], f"laid out again with {', '.join(rest)} {ROWS[found[2]]}")
+            if relaid is None and SOLVED_FAMILIES and solver is not None:
                 # or cut again by the solver without it (mansion.building.family_solve)
                 solved = solved_family(merged, fewer, head, rest, building_type, min_contact, solver, seeds)
                 if solved is not None:
-                    found, how = (*solved, 0), f"cut again with {', '.join(rest)} on their own floor"
-            if found is not None:
-                layout, graph = found[1], fewer
+                    relaid, how = solved[1], f"cut again with {', '.join(rest)} on their own floor"
+            if relaid is not None:
+                layout, graph = relaid, fewer
                 notes.append(f"{gone} dropped, its floor given to {head}; {head} {how} ({WHY})")
                 break
     return layout, graph, notes

@@ -58,7 +58,7 @@ from __future__ import annotations
 import hashlib
 import math
 from collections.abc import Callable, Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from mansion.building.banks import bank_graph, bank_layout
 from mansion.building.checks import check_building
@@ -91,6 +91,9 @@ from mansion.models.building import Building, BuildingProgram, Floor, Palette, P
 from mansion.models.room_design import ELONGATED_ASPECT, needed_width, room_design
 from mansion.models.room_shape import box_aspect, mostly_narrower
 from mansion.planning.program import floor_template
+
+if TYPE_CHECKING:
+    from mansion.floorplan.text_seeds import TextSeedPlanner
 
 __all__ = [
     "ATTEMPTS",
@@ -767,19 +770,26 @@ def _families_last(
     kept = {n.id for n in graph.nodes}
     words = floor.position_words
     if words and description:
-        from mansion.floorplan.text_seeds import position_checks, text_seed_planner
+        from mansion.floorplan.text_seeds import text_seed_planner
 
         text_planner = text_seed_planner(description, planned, floor.footprint, solver.get("cell_size", 0.5))
         if text_planner is not None:
-            centroids = {room.id: (room.centroid[0], room.centroid[1]) for room in layout.rooms}
-            checks = position_checks(text_planner, centroids)
-            words = [PositionWord(room=c.room, statement=c.text, honoured=c.honoured) for c in checks]
+            words = _position_words(text_planner, layout)
     return floor.model_copy(update={
         "layout": layout, "graph": graph, "relaxations": [*floor.relaxations, *notes],
         "room_cards": [card for card in floor.room_cards if card.id in kept],
         "carried_walls": first_round_walls(layout, graph) if program.load_bearing_walls else [],
         "position_words": words,
     })
+
+
+def _position_words(text_planner: TextSeedPlanner, layout: FloorLayout) -> list[PositionWord]:
+    """The description's statements placing rooms of the floor (read by ``text_planner``), each
+    with whether ``layout``'s rooms (their centroids) honour it."""
+    from mansion.floorplan.text_seeds import position_checks
+
+    centroids = {room.id: (room.centroid[0], room.centroid[1]) for room in layout.rooms}
+    return [PositionWord(room=c.room, statement=c.text, honoured=c.honoured) for c in position_checks(text_planner, centroids)]
 
 
 def _without_optional(
@@ -1074,12 +1084,7 @@ def _solve_building_floor(
             layout, graph, fp, rng_seed, attempts, relax, left_out = solved
             layout, graph, mended = premended
     notes = {r.id: r.notes for r in floor_program.rooms}
-    words: list[PositionWord] = []
-    if text_planner is not None:
-        from mansion.floorplan.text_seeds import position_checks
-
-        centroids = {room.id: (room.centroid[0], room.centroid[1]) for room in layout.rooms}
-        words = [PositionWord(room=c.room, statement=c.text, honoured=c.honoured) for c in position_checks(text_planner, centroids)]
+    words = [] if text_planner is None else _position_words(text_planner, layout)
     floor = Floor(
         index=index, graph=graph, footprint=fp, layout=layout,
         room_cards=_room_cards(graph, notes), rng_seed=rng_seed, attempts=attempts,
