@@ -758,6 +758,30 @@ def test_a_room_of_the_layout_kept_far_from_where_the_others_put_it_is_seeded_th
     assert LOCAL_DISTANCE > 1 and _consensus_moves(_Grid(near, ids), medians, free) == []
 
 
+def test_a_room_of_the_layout_kept_far_from_where_a_rival_has_it_is_seeded_there() -> None:
+    from mansion.eval.text_placement import LOCAL_DISTANCE, RIVALS, _rival_moves, _rivals, _room_seeds
+
+    ids = ["living", "kitchen", "bath"]
+    kept = np.zeros((10, 20), dtype=int)
+    kept[:, :4], kept[:, 16:] = 1, 2
+    # a rival has the kitchen at the east end and the bathroom in the middle of the west half
+    rival = np.zeros((10, 20), dtype=int)
+    rival[:, 16:], rival[:, 6:9] = 1, 2
+    seeds, theirs = _room_seeds(_Grid(kept, ids)), _room_seeds(_Grid(rival, ids))
+    assert seeds is not None and theirs is not None
+    moves = _rival_moves(_Grid(kept, ids), [_Grid(rival, ids)])
+    # one room at a time, in the floor's order: the kitchen, then the bathroom, the living room
+    # (its centroid within LOCAL_DISTANCE cells of the rival's) not moved
+    assert [m for m in moves] == [{**seeds, "kitchen": theirs["kitchen"]}, {**seeds, "bath": theirs["bath"]}]
+    # a rival with every room near where the layout kept has it gives no move
+    assert LOCAL_DISTANCE > 1 and _rival_moves(_Grid(kept, ids), [_Grid(kept.copy(), ids)]) == []
+    # the rivals: the layouts ranked next, passing over the one kept and those all but the same
+    same = kept.copy()
+    same[0, 5] = 1
+    preds = [kept, rival, same, np.roll(kept, 8, axis=1)]
+    assert _rivals(0, [0, 2, 1, 3], preds)[: min(RIVALS, 2)] == [1, 3][: min(RIVALS, 2)]
+
+
 def test_the_local_search_keeps_a_relaid_layout_only_when_it_ranks_first(monkeypatch: pytest.MonkeyPatch) -> None:
     from mansion.eval import text_placement
     from mansion.eval.t2d import T2DPlan, node_id

@@ -180,8 +180,9 @@ def solve_from_text(
     their rooms give seeds not tried yet, :data:`AGAIN_ROUNDS` times. Each layout's agreement is
     measured against the layouts of the seed sets read from the text only (:func:`_ranking`).
     Last, a local search on the layout kept (:data:`LOCAL_ROUNDS`): its rooms far from where the
-    seed sets' layouts mostly put them are seeded there (:func:`_consensus_moves`), and a layout
-    so made is kept when it ranks first."""
+    seed sets' layouts mostly put them are seeded there (:func:`_consensus_moves`), and its rooms
+    far from where the :data:`RIVALS` layouts ranked next have them are seeded at those layouts'
+    seeds of them (:func:`_rival_moves`), and a layout so made is kept when it ranks first."""
     p = text_problem(plan, description)
     base = SeedWeights()
     solved: list[tuple[float, dict[str, tuple[float, float]], Any, Any]] = []
@@ -256,11 +257,16 @@ def solve_from_text(
             again = _room_seeds(solved[j][3].grid)
             if again is not None and again not in tried:
                 relayout(again, offsets[j])
-    best = _ranking(solved, agreements, independent)[0]
-    # the layout kept, its rooms far from where the seed sets' layouts put them moved there
+    ranked = _ranking(solved, agreements, independent)
+    best = ranked[0]
+    # the layout kept, its rooms far from where the seed sets' layouts put them moved there, and
+    # each of its rooms far from where one of the layouts ranked next has it seeded there
     medians = _room_medians([s[3].grid for s in solved[:independent]])
     for _ in range(LOCAL_ROUNDS):
-        for again in _consensus_moves(solved[best][3].grid, medians, p.free):
+        rivals = _rivals(best, ranked, [s[2] for s in solved])
+        moves = _consensus_moves(solved[best][3].grid, medians, p.free)
+        moves += _rival_moves(solved[best][3].grid, [solved[j][3].grid for j in rivals])
+        for again in moves:
             if again not in tried:
                 relayout(again, offsets[best])
         kept = _ranking(solved, agreements, independent)[0]
@@ -383,6 +389,45 @@ def _consensus_moves(
     return moves
 
 
+def _rivals(best: int, ranked: list[int], preds: list[Any]) -> list[int]:
+    """The :data:`RIVALS` layouts ranked first (``ranked``: the ranking before the local search)
+    after ``best`` whose class maps are not all but the same as its (micro-IoU at most
+    :data:`RIVAL_SAME`); compares candidate layouts with each other only."""
+    from mansion.eval.iou import plan_iou
+
+    out: list[int] = []
+    for j in ranked:
+        if len(out) >= RIVALS:
+            break
+        if j != best and plan_iou(preds[j], preds[best]).micro <= RIVAL_SAME:
+            out.append(j)
+    return out
+
+
+def _rival_moves(grid: Any, rivals: list[Any]) -> list[dict[str, tuple[float, float]]]:
+    """Seed sets between a solved floor and each of the layouts ``rivals``: seeds at its rooms
+    (:func:`_room_seeds`) with one room whose centroid lies more than :data:`LOCAL_DISTANCE` cells
+    from its centroid in the rival seeded at the rival's seed of that room instead, one room at a
+    time (rivals in order, rooms in the floor's order); none when a room of the floor has no cell."""
+    import numpy as np
+
+    seeds = _room_seeds(grid)
+    if seeds is None:
+        return []
+    here = _centroids(grid)
+    limit = LOCAL_DISTANCE * grid.cell_size
+    moves: list[dict[str, tuple[float, float]]] = []
+    for rival in rivals:
+        theirs = _room_seeds(rival)
+        if theirs is None:
+            continue
+        there = _centroids(rival)
+        for rid in here:
+            if rid in there and np.hypot(here[rid][0] - there[rid][0], here[rid][1] - there[rid][1]) > limit:
+                moves.append({**seeds, rid: theirs[rid]})
+    return moves
+
+
 def _room_seeds(grid: Any) -> dict[str, tuple[float, float]] | None:
     """One seed per room of a solved floor: the centre of the room's cell nearest its centroid
     (a cell of the room even when it is L-shaped); None when a room has no cell."""
@@ -491,6 +536,24 @@ AGAIN_ROUNDS = 4
 #: under the solver's next random seeds of its kind and of the longest-side growth after the
 #: search, 69.29 / 66.37 and 73.59 / 70.30 (not both halves).
 LOCAL_ROUNDS = 3
+
+#: How many of the layouts ranked next after the layout kept (the ranking before the local search,
+#: layouts all but the same as the one kept, micro-IoU above :data:`RIVAL_SAME`, passed over) each
+#: round of :data:`LOCAL_ROUNDS` takes rooms from: each room of the layout kept whose centroid lies
+#: more than :data:`LOCAL_DISTANCE` cells from where such a layout has it is seeded at that
+#: layout's seed of it, the other rooms at their own cells (:func:`_rival_moves`), and laid out
+#: like the moves to the medians. The relayouts lay out each good layout again whole; these try
+#: one room of the next ones in the one kept, which the choice keeps only when the text and the
+#: seed sets' layouts like it better. Issue 15's thirteenth round, simulated on every candidate of
+#: the dev plans cached (evaluation only; the new solves made), micro / macro, against the local
+#: search without them (odd ids 69.35 / 66.50, even 73.62 / 70.30): 3 rivals 69.57 / 66.72 and
+#: 73.70 / 70.32; 6, 69.59 / 66.70 and 73.87 / 70.51; 10, 69.72 / 66.84 and 73.88 / 70.55; 16,
+#: 69.78 / 66.88 and 73.95 / 70.67 (about 30 solves more a plan); 24, 69.70 / 66.94 and 73.90 /
+#: 70.59.
+RIVALS = 16
+
+#: The micro-IoU above which a layout counts as the same as the layout kept for :data:`RIVALS`.
+RIVAL_SAME = 0.97
 
 #: How far (cells of the plan's grid) a room of the layout kept may lie from the median of its
 #: centroids over the seed sets' layouts before :data:`LOCAL_ROUNDS` moves it there. Simulated as
