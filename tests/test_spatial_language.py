@@ -770,9 +770,13 @@ def test_a_room_of_the_layout_kept_far_from_where_a_rival_has_it_is_seeded_there
     seeds, theirs = _room_seeds(_Grid(kept, ids)), _room_seeds(_Grid(rival, ids))
     assert seeds is not None and theirs is not None
     moves = _rival_moves(_Grid(kept, ids), [_Grid(rival, ids)])
-    # one room at a time, in the floor's order: the kitchen, then the bathroom, the living room
-    # (its centroid within LOCAL_DISTANCE cells of the rival's) not moved
-    assert [m for m in moves] == [{**seeds, "kitchen": theirs["kitchen"]}, {**seeds, "bath": theirs["bath"]}]
+    # one room at a time, in the floor's order, each into the layout kept and back into the
+    # rival: the kitchen, then the bathroom, the living room (its centroid within LOCAL_DISTANCE
+    # cells of the rival's) not moved
+    assert moves == [
+        {**seeds, "kitchen": theirs["kitchen"]}, {**theirs, "kitchen": seeds["kitchen"]},
+        {**seeds, "bath": theirs["bath"]}, {**theirs, "bath": seeds["bath"]},
+    ]
     # a rival with every room near where the layout kept has it gives no move
     assert LOCAL_DISTANCE > 1 and _rival_moves(_Grid(kept, ids), [_Grid(kept.copy(), ids)]) == []
     # the rivals: the layouts ranked next, passing over the one kept and those all but the same
