@@ -564,7 +564,9 @@ LOCAL_ROUNDS = 8
 #: 68.92, odd 69.51 / 66.73, even 74.58 / 71.19): the layout kept given to the rectangle layouts
 #: of :data:`RECTANGLES` as their start, each round, 71.97 / 68.88 (69.44 / 66.64, 74.60 / 71.22);
 #: each room also seeded at the centres of the modes of its centroids over the seed sets' layouts
-#: (three clusters, those holding 15 % of them), 71.86 / 68.77 (69.45 / 66.68, 74.37 / 70.94).
+#: (three clusters, those holding 15 % of them), 71.86 / 68.77 (69.45 / 66.68, 74.37 / 70.94);
+#: each two far rooms of a rival that the protocol pairs moved together too, 71.94 / 68.83 (69.45 /
+#: 66.62, 74.53 / 71.12).
 RIVALS = 16
 
 #: The micro-IoU above which a layout counts as the same as the layout kept for :data:`RIVALS`.
