@@ -368,9 +368,7 @@ def _consensus_moves(
     seeds = _room_seeds(grid)
     if seeds is None:
         return []
-    here = _centroids(grid)
-    limit = LOCAL_DISTANCE * grid.cell_size
-    far = [rid for rid in here if rid in medians and np.hypot(here[rid][0] - medians[rid][0], here[rid][1] - medians[rid][1]) > limit]
+    far = _far_rooms(_centroids(grid), medians, grid.cell_size)
     rr, cc = np.nonzero(free.mask)
     xs = free.origin[0] + (cc + 0.5) * free.cell
     ys = free.origin[1] + (rr + 0.5) * free.cell
@@ -410,24 +408,34 @@ def _rival_moves(grid: Any, rivals: list[Any]) -> list[dict[str, tuple[float, fl
     from its centroid in the rival seeded at the rival's seed of that room instead, and the rival's
     seeds with that room at the floor's seed of it, one room at a time (rivals in order, rooms in
     the floor's order); none when a room of the floor has no cell."""
-    import numpy as np
-
     seeds = _room_seeds(grid)
     if seeds is None:
         return []
     here = _centroids(grid)
-    limit = LOCAL_DISTANCE * grid.cell_size
     moves: list[dict[str, tuple[float, float]]] = []
     for rival in rivals:
         theirs = _room_seeds(rival)
         if theirs is None:
             continue
-        there = _centroids(rival)
-        for rid in here:
-            if rid in there and np.hypot(here[rid][0] - there[rid][0], here[rid][1] - there[rid][1]) > limit:
-                # and the other way round: the rival with that room where the layout kept has it
-                moves += [{**seeds, rid: theirs[rid]}, {**theirs, rid: seeds[rid]}]
+        for rid in _far_rooms(here, _centroids(rival), grid.cell_size):
+            # and the other way round: the rival with that room where the layout kept has it
+            moves += [{**seeds, rid: theirs[rid]}, {**theirs, rid: seeds[rid]}]
     return moves
+
+
+def _far_rooms(
+    here: dict[str, tuple[float, float]], points: dict[str, tuple[float, float]], cell_size: float
+) -> list[str]:
+    """The rooms of a solved floor whose centroid (``here``, :func:`_centroids`, in its order) lies
+    more than :data:`LOCAL_DISTANCE` cells of ``cell_size`` from their point in ``points`` (rooms
+    with no point left out): the rooms the local search moves."""
+    import numpy as np
+
+    limit = LOCAL_DISTANCE * cell_size
+    return [
+        rid for rid, (x, y) in here.items()
+        if rid in points and np.hypot(x - points[rid][0], y - points[rid][1]) > limit
+    ]
 
 
 def _room_seeds(grid: Any) -> dict[str, tuple[float, float]] | None:
