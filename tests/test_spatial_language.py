@@ -191,6 +191,37 @@ def test_sizes_in_feet_and_metres() -> None:
     assert sizes("The kitchen is 10 feet in length, 7 feet in width.") == [("kitchen_2", round(10 * ft, 2), round(7 * ft, 2), None, True)]
 
 
+def test_the_lengths_of_a_rooms_sides_are_its_width_and_depth() -> None:
+    ft = 0.3048
+    # the north and south sides run across the plan (the width), the east and west sides up it
+    # (the depth), each said in a sentence of its own
+    text = "The kitchen is in the north east corner. North and South side lenght is 10 feet. East and west side lenght is 8 feet."
+    assert sizes(text) == [("kitchen_2", round(10 * ft, 2), round(8 * ft, 2), None, True)]
+    assert facts(text) == {("kitchen_2", "position", "northeast", ())}
+    # sides of unequal length: the room is as wide as its longest side across
+    assert sizes("The living room is large. North side length is 16 feet. South side length is 12 feet. East and west side length is 31 feet.") == [
+        ("living_room_0", round(16 * ft, 2), round(31 * ft, 2), None, True)
+    ]
+    # all four sides at once; a side with a hyphen for "is"; metres
+    assert sizes("The bathroom is small. North, east, west and South side length is 8 feet.") == [
+        ("bathroom_3", round(8 * ft, 2), round(8 * ft, 2), None, True)
+    ]
+    assert sizes("The master bedroom: the north side is 10 feet on the outside wall, the east wall- 12-feet (outside wall).") == [
+        ("master_room_1", round(10 * ft, 2), round(12 * ft, 2), None, True)
+    ]
+    assert sizes("The common room is square. The east and west walls are 3 m. The south wall is 4 m.") == [
+        ("common_room_4", 4.0, 3.0, None, True)
+    ]
+    # one axis only is kept as said, with no depth to shape the room by
+    assert sizes("The balcony is long. Its north side is 20 feet.") == [("balcony_5", round(20 * ft, 2), None, None, True)]
+    # a number with no unit after a side is no length ("to the east is 1 of the bedrooms")
+    assert sizes("The kitchen is small. To its east is 1 of the bedrooms.") == []
+    # each room its own sides
+    assert sizes("The kitchen is small. Its north side is 6 feet. The bathroom is smaller. Its east side is 5 feet. The kitchen's west side is 9 feet.") == [
+        ("kitchen_2", round(6 * ft, 2), round(9 * ft, 2), None, True), ("bathroom_3", None, round(5 * ft, 2), None, True),
+    ]
+
+
 def test_sizes_with_the_nouns_before_their_numbers_and_common_spellings() -> None:
     ft = 0.3048
 
@@ -1549,6 +1580,12 @@ def test_between_a_list_of_rooms_each_on_its_side() -> None:
         ("balcony_5", "relation", "south_of", ("kitchen_2",)),
         ("bathroom_3", "relation", "west_of", ("kitchen_2",)),
         ("living_room_0", "relation", "east_of", ("kitchen_2",)),
+    }
+    # "in the west" as well as "to the west"
+    assert facts("The bathroom is in between the common room in west and the kitchen and living room in the east.") >= {
+        ("common_room_4", "relation", "west_of", ("bathroom_3",)),
+        ("kitchen_2", "relation", "east_of", ("bathroom_3",)),
+        ("living_room_0", "relation", "east_of", ("bathroom_3",)),
     }
     # a room at a part of the plan after "between" is not one of such a list: the subject is
     # still next to it

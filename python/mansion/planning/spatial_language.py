@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from mansion.planning.vocabulary import ROOM_SYNONYMS
 
@@ -504,7 +504,33 @@ def read_description(text: str, rooms: Sequence[KnownRoom]) -> Reading:
             statements.extend(found)
         elif not _is_filler(clause.text):
             unread.append(_plain(clause.text, mentions))
-    return _resolve(statements, unread, mentions, rooms)
+    return _resolve(_join_sides(statements), unread, mentions, rooms)
+
+
+def _join_sides(statements: list[Statement]) -> list[Statement]:
+    """Join each room's side lengths (size statements with only a width or only a depth, from
+    clauses such as "D:north side length is 16 feet. D:east and D:west side length is 8 feet")
+    into one oriented size where its first stood: the longest side each way (the room's box is as
+    wide as its longest side across)."""
+    sides: dict[tuple[str, int | None], list[Statement]] = {}
+    for s in statements:
+        if s.kind == "size" and s.area is None and (s.width is None) != (s.depth is None):
+            sides.setdefault(s.subject.key, []).append(s)
+    if not sides:
+        return statements
+    out: list[Statement] = []
+    for s in statements:
+        group = sides.get(s.subject.key) if s.kind == "size" else None
+        if group is None or not any(s is g for g in group):
+            out.append(s)
+        elif s is group[0]:
+            widths = [g.width for g in group if g.width is not None]
+            depths = [g.depth for g in group if g.depth is not None]
+            out.append(replace(
+                s, width=max(widths, default=None), depth=max(depths, default=None),
+                text="; ".join(g.text for g in group),
+            ))
+    return out
 
 
 #: A description that opens by placing a room it does not name: "Located in the middle of the
@@ -760,7 +786,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         # "between the R1 to the D:north, R2 to the D:east, ...": a list of rooms each on its
         # side of the subject (read below), not one room it is next to
         # ("between the R1 on the D:northwest corner of the home, and R2" is a room between two)
-        side = re.match(r"\s+(?:is\s+)?(?:to|on|at)" + _ART + r"\s+D:\w+\b(?!(?:\s+" + _PART + r")?\s+(?:of|in)\s+(?:the\s+)?" + _PLACE + r")", text[m.end():])
+        side = re.match(r"\s+(?:is\s+)?(?:to|on|at|in)" + _ART + r"\s+D:\w+\b(?!(?:\s+" + _PART + r")?\s+(?:of|in)\s+(?:the\s+)?" + _PLACE + r")", text[m.end():])
         if len(others) == 1 and side:
             continue
         if others and free(m.start(), m.end()):
@@ -1049,6 +1075,27 @@ def _sizes(text: str, subj: RoomMention, mentions: list[RoomMention]) -> list[St
         w, d = (b, a) if swapped else (a, b)
         spans.append((m.start(), m.end()))
         out.append(Statement(subject=subj, kind="size", width=w * unit, depth=d * unit, oriented=ORIENT_BY_ORDER or bool(first or second), text=_plain(m.group(0), mentions)))
+    # the length of a side of the room: "the D:north and D:south side length is 3 feet", "D:east
+    # wall- 12-feet", "the D:east and D:west are 2 feet": the D:north and D:south sides run across
+    # the plan, so their length is the room's width, the D:east and D:west sides' its depth (one
+    # axis a clause; :func:`_join_sides` joins a room's clauses into one size)
+    side = (
+        r"((?:D:\w+)(?:\s*(?:,|and|&)\s*(?:the\s+)?D:\w+)*)(?:\s+(?:sides?|walls?|edges?))?\s*(?:lengths?)?\s*"
+        r"(?:is|are|measures?|measuring|-|=|:)\s*(?:about\s+|approximately\s+|around\s+|roughly\s+|only\s+)?"
+        + _NUM_RE + r"\s*-?\s*('|\"|(?:feet|foot|ft|m|meters?|metres?|mtrs?)\b)(?!\s*(?:x|by|\*|×)\s*\d)"
+    )
+    for m in re.finditer(side, text):
+        value = float(m.group(2))
+        dirs = set(re.findall(r"D:(\w+)", m.group(1)))
+        if not 0 < value <= 300 or not dirs <= {"north", "south", "east", "west"}:
+            continue
+        unit = _unit(m.group(3), text)
+        across, up = dirs & {"north", "south"}, dirs & {"east", "west"}
+        spans.append((m.start(), m.end()))
+        out.append(Statement(
+            subject=subj, kind="size", width=value * unit if across else None, depth=value * unit if up else None,
+            oriented=True, text=_plain(m.group(0), mentions),
+        ))
     if not out:
         # "8 feet in width and 6 feet in length", "10 feet width and 12 feet length"
         pair = re.search(_NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long)\b.{0,30}?" + _NUM_RE + r"\s*(" + _SIZE_UNIT + r")\s*(?:in\s+)?(width|wide|length|long|depth|deep)\b", text)
