@@ -1625,3 +1625,74 @@ def test_a_room_inset_to_a_corner_of_the_subject_is_no_position_of_the_subject()
     assert facts("The master room takes the northwest corner, the bathroom being inset towards the southeast corner.") == {
         ("master_room_1", "position", "northwest", ()),
     }
+
+
+def test_a_list_of_sides_with_a_comma_before_and() -> None:
+    assert facts("The balcony is on the east side, with the house exterior to the north, east, and south.") == {
+        ("balcony_5", "position", "east", ()),
+        ("balcony_5", "exterior", "north", ()),
+        ("balcony_5", "exterior", "east", ()),
+        ("balcony_5", "exterior", "south", ()),
+    }
+    # "R1 is to the west, and south west part of the room": both sides of the subject
+    assert facts("The kitchen is in the north. The living room is to the west, and south west part of the room.") == {
+        ("kitchen_2", "position", "north", ()),
+        ("living_room_0", "relation", "west_of", ("kitchen_2",)),
+        ("living_room_0", "relation", "southwest_of", ("kitchen_2",)),
+    }
+
+
+def test_a_side_then_is_without_to_the() -> None:
+    # "..., and southwest is the R1": R1 on that side of the subject, not the subject there
+    assert facts("The kitchen is in the north. To its west is the bathroom, and southeast is the living room.") == {
+        ("kitchen_2", "position", "north", ()),
+        ("bathroom_3", "relation", "west_of", ("kitchen_2",)),
+        ("living_room_0", "relation", "southeast_of", ("kitchen_2",)),
+    }
+
+
+def test_what_lies_beside_something_other_than_a_room_is_not_where_the_subject_is() -> None:
+    # a thing that is no room to a side, and a side "of that", say nothing of where the subject is
+    assert facts("The master room is in the south. To the east is a small hallway, and north of that is the kitchen.") == {
+        ("master_room_1", "position", "south", ()),
+    }
+    # a room there is read as before
+    assert facts("The master room is in the south. To the east is the bathroom.") == {
+        ("master_room_1", "position", "south", ()),
+        ("bathroom_3", "relation", "east_of", ("master_room_1",)),
+    }
+
+
+def test_a_side_then_one_room_and_others_on_a_second_side() -> None:
+    assert facts("The kitchen is in the northeast corner. To its west is the bathroom and the living room to its south.") == {
+        ("kitchen_2", "position", "northeast", ()),
+        ("bathroom_3", "relation", "west_of", ("kitchen_2",)),
+        ("living_room_0", "relation", "south_of", ("kitchen_2",)),
+    }
+
+
+def test_connected_on_a_side_with_a_room() -> None:
+    assert facts(
+        "The living room is large. It opens on the north with the kitchen and on the east with the bathroom and the balcony."
+    ) == {
+        ("kitchen_2", "relation", "north_of", ("living_room_0",)),
+        ("bathroom_3", "relation", "east_of", ("living_room_0",)),
+        ("balcony_5", "relation", "east_of", ("living_room_0",)),
+    }
+    assert ("master_room_1", "relation", "south_of", ("living_room_0",)) in facts(
+        "The living room connects to the kitchen on the north and on the south to the master room."
+    )
+    # after "is", the side is the subject's, and the listed room has a side of its own
+    assert facts("The bathroom is on the west side with the kitchen to the north.") == {
+        ("bathroom_3", "position", "west", ()),
+        ("kitchen_2", "relation", "north_of", ("bathroom_3",)),
+    }
+    # "to" names a room only after a verb of connecting
+    assert ("kitchen_2", "relation", "east_of", ("bathroom_3",)) not in facts("The bathroom sits on the east to the kitchen.")
+
+
+def test_on_its_side_then_a_room_without_a_verb() -> None:
+    assert facts("The living room is in the centre, facing on its right the master room.") == {
+        ("living_room_0", "position", "centre", ()),
+        ("master_room_1", "relation", "east_of", ("living_room_0",)),
+    }

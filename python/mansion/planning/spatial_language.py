@@ -735,7 +735,8 @@ _ROOMSEQ = re.compile(r"R(\d+)")
 # "\b": a look-ahead after a direction must not see the word's last letters ("D:south of" is no
 # "D:sout" followed by "h of")
 _D = r"D:(\w+)\b"
-_DD = r"D:(\w+)\b(?:\s*(?:,|and|&|or|/)\s*(?:the\s+)?D:(\w+)\b)*"
+# ("D:north, D:east, and D:south": a list with its last comma before "and")
+_DD = r"D:(\w+)\b(?:\s*(?:,\s*and|,|and|&|or|/)\s*(?:the\s+)?D:(\w+)\b)*"
 _ART = r"(?:\s+(?:the|its|it's|it|his|her|their|a|your|our|my))?"
 
 _SIZE_UNIT = r"(?:'|feet|foot|ft\.?|m|meters?|metres?|mtrs?|\"|inches)?"
@@ -827,6 +828,20 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
 
     # 3. Another room relative to the subject: "with R1 to the D:south", "R1 is to its D:west",
     # "R1 on its D:right", "to the D:north is R1", "D:north is R1", "R1 D:below" (run-on style).
+    # "to its D:north is the R1 and the R2 to its D:east": the first room on the first side, the
+    # others on the second (not all of them to the D:east, as the list alone reads)
+    two_sides = (
+        r"\bto" + _ART + r"\s+(?:" + _DD + r")\s+(?:is|are)\s+(?:the\s+|a\s+|an\s+)?(?P<first>R\d+)\s+and\s+(?:the\s+|a\s+|an\s+)?"
+        r"(?P<rest>" + _ROOMS + r")(?:\s+(?:is|are|lies|lie|sits))?\s+(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
+    )
+    for m in re.finditer(two_sides, text):
+        if not free(m.start(), m.end()):
+            continue
+        for span, d_span in ((m.group("first"), text[m.start() : m.start("first")]), (m.group("rest"), text[m.end("rest") : m.end()])):
+            for d in re.findall(r"D:(\w+)", d_span):
+                if d != "centre":
+                    out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in rooms_in(span))
+        used.append((m.start(), m.end()))
     pat_after = (
         r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|both))*"
         r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r"(?:\s+both)?|(?P<bare>\s+the))?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
@@ -872,10 +887,33 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             d = "north" if m.group(2) == "above" else "south"
             out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in others)
             used.append((m.start(), m.end()))
+    # "connects to it on the D:northwest with the R1, on the D:east with R2": R1 on that side of
+    # the subject, as "on the D:south to the R3" after a verb of connecting ("R0 is on the D:east
+    # side with R1 to the D:north" places the subject, and R1 has a side of its own)
+    with_side = (
+        r"\b(?:on|at)\s+(?:the|its|it's)\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|walls?))?\s+(?P<link>with|to)\s+(?:the\s+|a\s+|an\s+)?(?P<rooms>" + _ROOMS + r")"
+    )
+    for m in re.finditer(with_side, text):
+        others = rooms_in(m.group("rooms"))
+        if not others or not free(m.start(), m.end()):
+            continue
+        if re.search(r"\b(?:is|are|was|were|located|situated|lies|lie|sits|placed|positioned)\s+$", text[: m.start()]):
+            continue
+        if m.group("link") == "to" and not re.search(r"\b(?:conn?ects?|conn?ected|conn?ecting|opens?|leads?)\b", text[: m.start()]):
+            continue
+        if re.match(r"(?:\s+(?:is|are|lies|lie|sits))?\s+(?:(?:to|on|at|in)" + _ART + r"\s+)?D:", text[m.end():]):
+            continue
+        for d in _dirs(m, text):
+            if d != "centre":
+                out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in others)
+        used.append((m.start(), m.end()))
     # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
     by_sides = r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")"
-    pat_before = r"\b(?:to|on|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
-    for pattern in (by_sides, pat_before):
+    # ("..., and D:north is the R1": the "to the" left out after a list's comma or "and")
+    pat_before = r"(?:\b(?:to|on|at)" + _ART + r"\s+|(?:^|,|\band)\s*)(?:" + _DD + r")(?:\s+(?:side|end|wall))?(?:\s+(?:of|from)\s+(?:it|this\s+room|the\s+room))?\s*(?:,\s*)?(?:is|are|lies|lie|sits|you\s+have|you'll\s+find|there\s+is|there\s+are)\s+(?:the\s+)?(" + _ROOMS + ")"
+    # "facing on its D:east the R1": the verb left out after the subject's own side
+    on_its = r"\bon\s+(?:its|it|it's|their)\s+(?:" + _DD + r")(?:\s+(?:side|end))?\s+(?:the\s+|a\s+|an\s+)?(" + _ROOMS + ")"
+    for pattern in (by_sides, pat_before, on_its):
         for m in re.finditer(pattern, text):
             others = rooms_in(m.group(m.lastindex or 0))
             if not others or not free(m.start(), m.end()):
@@ -972,6 +1010,13 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if re.search(r"\b(?:door|entry|entrance|window|opening)\s+(?:\w+\s+){0,3}$", before):
             continue
         if re.match(r"\s+(?:of|from)\s+(?:the\s+)?R\d+", after):  # relation left over (e.g. to itself)
+            continue
+        # "D:south of that is ...": beside something named before, not where the subject is
+        if re.match(r"\s+(?:of|from)\s+(?:that|this|which|those|these|them)\b", after):
+            continue
+        # "to the D:northeast is the main entry alcove": a thing beside the subject (a room there
+        # is read as a relation above), not where the subject is
+        if re.search(r"\bto\s+(?:the|its|it's|their)\s+$", before) and re.match(r"(?:\s*(?:,\s*and|,|and|&)\s*D:\w+)*\s+(?:is|are|lies|lie|sits)\b", after):
             continue
         # dimensions ("the north and south side length is 3 feet") and doors are not positions
         if re.match(r"(?:\s*(?:and|,|&)\s*D:\w+)*\s+(?:sides?\s+)?(?:length|lenght|width|measures?|dimension)", after):
