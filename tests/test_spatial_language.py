@@ -1696,3 +1696,23 @@ def test_on_its_side_then_a_room_without_a_verb() -> None:
         ("living_room_0", "position", "centre", ()),
         ("master_room_1", "relation", "east_of", ("living_room_0",)),
     }
+
+
+def test_another_room_then_which_is_where_it_is() -> None:
+    # "R1, which is on the D:north side": R1's position, not the subject's
+    assert facts("The balcony is on the south side. It is opposite the kitchen, which is on the north side of the floor plan.") == {
+        ("balcony_5", "position", "south", ()),
+        ("balcony_5", "relation", "across_from", ("kitchen_2",)),
+        ("kitchen_2", "position", "north", ()),
+    }
+    assert ("bathroom_3", "position", "southwest", ()) not in facts(
+        "The bathroom is north of the master bedroom which is located in the south west corner."
+    )
+
+
+def test_rooms_across_from_it_on_its_side() -> None:
+    assert facts("The common room is on the north side of the plan. The kitchen and bathroom are across from it, on its south side.") == {
+        ("common_room_4", "position", "north", ()),
+        ("kitchen_2", "relation", "south_of", ("common_room_4",)),
+        ("bathroom_3", "relation", "south_of", ("common_room_4",)),
+    }

@@ -781,6 +781,19 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if others and free(m.start(), m.end()):
             used.append((m.start(), m.end()))
             out.extend(Statement(subject=o, kind="position", direction=m.group(2), text=_plain(m.group(0), mentions)) for o in others)
+    # - another room then where it is, "opposite the R1, which is on the D:north side of the plan":
+    #   the position of R1, not of the subject;
+    for m in re.finditer(
+        r"(R\d+)\s*,?\s*which\s+(?:is|lies|sits)\s+(?:located\s+|situated\s+)?(?:in|on|at)\s+(?:the\s+)?(?:" + _DD + r")(?:\s+" + _PART + r")?",
+        text,
+    ):
+        others = rooms_in(m.group(1))
+        if others and free(m.start(), m.end()):
+            used.append((m.end(1), m.end()))  # the room itself stays free for "opposite the R1"
+            out.extend(
+                Statement(subject=o, kind="position", direction=d, text=_plain(m.group(0), mentions))
+                for o in others for d in _dirs(m, text)
+            )
     # 1. "between R1 and R2"
     for m in re.finditer(r"\b(?:in\s+)?between\s+(?:of\s+|in\s+)?(?:the\s+)?(" + _ROOMS + ")", text):
         others = rooms_in(m.group(1))
@@ -880,6 +893,18 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
                 if inside:
                     out.append(Statement(subject=o, kind="position", direction=d, text=_plain(m.group(0), mentions)))
         used.append((m.start(), m.end()))
+    # "R1 and R2 are across from it, on its D:south side": they lie on that side of the subject
+    for m in re.finditer(
+        r"(" + _ROOMS + r")\s+(?:is|are)\s+(?:directly\s+|just\s+)?(?:across\s+from|opposite(?:\s+to)?|next\s+to|beside|adjacent\s+to|near)\s+it\s*,?\s*"
+        r"(?:on|to|at)\s+(?:its|it's)\s+(?:" + _DD + r")(?:\s+(?:side|end))?",
+        text,
+    ):
+        others = rooms_in(m.group(1))
+        if others and free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                if d != "centre":
+                    out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in others)
+            used.append((m.start(), m.end()))
     # "with the R1 above and R2 to the D:west": R1 north of the subject ("above R2" is read above)
     for m in re.finditer(r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|sits|just|directly|immediately))*\s+(above|below|beneath|underneath)\b(?!\s+(?:the\s+|a\s+)?R\d)", text):
         others = rooms_in(m.group(1))
