@@ -1716,3 +1716,16 @@ def test_rooms_across_from_it_on_its_side() -> None:
         ("kitchen_2", "relation", "south_of", ("common_room_4",)),
         ("bathroom_3", "relation", "south_of", ("common_room_4",)),
     }
+
+
+def test_the_entrance_from_a_side_is_an_outside_wall_of_the_room() -> None:
+    # the front door is in that wall of the room: an outside wall, not where in the plan it is
+    assert facts("The living room is entrance from north side. It is 20 feet length and 20 feet width.") == {
+        ("living_room_0", "exterior", "north", ()),
+    }
+    assert facts("The living room is the largest room; its entrance is on the west side.") == {
+        ("living_room_0", "exterior", "west", ()),
+    }
+    assert facts("The living room is the entrance of the south side.") == {("living_room_0", "exterior", "south", ())}
+    # a room entered from another room is beside it
+    assert facts("The kitchen is entrance from living room.") == {("kitchen_2", "relation", "next_to", ("living_room_0",))}

@@ -955,6 +955,13 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if free(m.start(), m.end()):
             for d in _dirs(m, text):
                 add("exterior", m, direction=d)
+    # "is (the) entrance from the D:north side", "the entrance is on the D:west side": the front
+    # door is in that wall of the room, an outside wall
+    for m in re.finditer(r"\b(?:entrance|entry|front\s+door|main\s+door)\s+(?:is\s+)?(?:from|on|at|to|of)\s+(?:the\s+)?(?:" + _DD + r")\s+(?:side|wall)\b", text):
+        if free(m.start(), m.end()):
+            for d in _dirs(m, text):
+                if d != "centre":
+                    add("exterior", m, direction=d)
     # "a small D:south exterior wall", "the D:north and D:east exterior walls", "to the D:west is
     # the house exterior", "exterior walls on the D:east" (each pattern in turn, as the spans it
     # takes are not free for the next)
