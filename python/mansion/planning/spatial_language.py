@@ -768,6 +768,15 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         used.append((m.start(), m.end()))
         out.append(Statement(subject=subj if subject is None else subject, kind=kind, text=_plain(m.group(0), mentions), **kw))  # type: ignore[arg-type]
 
+    def around(m: re.Match[str], others: Sequence[RoomMention], directions: Sequence[str]) -> None:
+        # ``others`` lie on those sides of the subject ("with the R1 to the D:south"); the
+        # match's span is read
+        used.append((m.start(), m.end()))
+        out.extend(
+            Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions))
+            for d in directions if d != "centre" for o in others
+        )
+
     # 0. A part of another room or a room set into a corner:
     # - a part of another room, "in the R1's D:southwest corner": the subject lies toward that
     #   side of it (a store in the corner of a bedroom);
@@ -851,10 +860,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
         if not free(m.start(), m.end()):
             continue
         for span, d_span in ((m.group("first"), text[m.start() : m.start("first")]), (m.group("rest"), text[m.end("rest") : m.end()])):
-            for d in re.findall(r"D:(\w+)", d_span):
-                if d != "centre":
-                    out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in rooms_in(span))
-        used.append((m.start(), m.end()))
+            around(m, rooms_in(span), re.findall(r"D:(\w+)", d_span))
     pat_after = (
         r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|lie|sits|located|situated|just|directly|immediately|also|both))*"
         r"(?:\s+(?:to|on|at|in|towards|toward|along)" + _ART + r"(?:\s+both)?|(?P<bare>\s+the))?\s+(?:" + _DD + r")(?!\s+(?:of|from)\b)"
@@ -901,17 +907,12 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
     ):
         others = rooms_in(m.group(1))
         if others and free(m.start(), m.end()):
-            for d in _dirs(m, text):
-                if d != "centre":
-                    out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in others)
-            used.append((m.start(), m.end()))
+            around(m, others, _dirs(m, text))
     # "with the R1 above and R2 to the D:west": R1 north of the subject ("above R2" is read above)
     for m in re.finditer(r"(" + _ROOMS + r")(?:\s+(?:is|are|lies|sits|just|directly|immediately))*\s+(above|below|beneath|underneath)\b(?!\s+(?:the\s+|a\s+)?R\d)", text):
         others = rooms_in(m.group(1))
         if others and free(m.start(), m.end()):
-            d = "north" if m.group(2) == "above" else "south"
-            out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in others)
-            used.append((m.start(), m.end()))
+            around(m, others, ["north" if m.group(2) == "above" else "south"])
     # "connects to it on the D:northwest with the R1, on the D:east with R2": R1 on that side of
     # the subject, as "on the D:south to the R3" after a verb of connecting ("R0 is on the D:east
     # side with R1 to the D:north" places the subject, and R1 has a side of its own)
@@ -928,10 +929,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             continue
         if re.match(r"(?:\s+(?:is|are|lies|lie|sits))?\s+(?:(?:to|on|at|in)" + _ART + r"\s+)?D:", text[m.end():]):
             continue
-        for d in _dirs(m, text):
-            if d != "centre":
-                out.extend(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)) for o in others)
-        used.append((m.start(), m.end()))
+        around(m, others, _dirs(m, text))
     # "surrounded on the D:north and D:east sides by R1": R1 lies on those sides of the subject
     by_sides = r"\b(?:on|to|at)" + _ART + r"\s+(?:" + _DD + r")(?:\s+(?:sides?|ends?|edges?|walls?))?\s+by\s+(?:the\s+)?(" + _ROOMS + ")"
     # ("..., and D:north is the R1": the "to the" left out after a list's comma or "and")
@@ -943,11 +941,7 @@ def _read_clause(clause: _Clause, mentions: list[RoomMention]) -> list[Statement
             others = rooms_in(m.group(m.lastindex or 0))
             if not others or not free(m.start(), m.end()):
                 continue
-            for d in _dirs(m, text):
-                if d != "centre":
-                    for o in others:
-                        out.append(Statement(subject=o, kind="relation", relation=_relation(d), others=(subj,), text=_plain(m.group(0), mentions)))
-            used.append((m.start(), m.end()))
+            around(m, others, _dirs(m, text))
 
     # 4. Exterior walls: "D:south wall is exterior", "exterior to the D:north, D:east", "outside
     # wall(s) to the D:east and D:west", "house exterior to the D:west".
