@@ -16,7 +16,7 @@ from mansion.cli import app
 from mansion.eval import evaluate_floorplans
 from mansion.planning.spatial_language import DIRECTIONS, KnownRoom, Reading, read_description
 from mansion.planning.spatial_seeds import PROPORTION_CAP, FreeGrid, SeedRoom, match_rooms, place_seeds
-from synthetic_plans import make_plan, write_plans
+from synthetic_plans import CLASSES, make_plan, write_plans
 
 FLAT = [
     KnownRoom("living_room_0", "living_room"), KnownRoom("master_room_1", "master_room"),
@@ -1520,6 +1520,99 @@ def test_when_nothing_else_lays_a_plan_out_the_rooms_are_put_on_a_ring(monkeypat
 
     with pytest.raises(InfeasibleLayoutError):
         solve_from_text(plan, text, never, heuristic, lambda s, k: never(s))
+
+
+def test_the_cut_parents_are_the_solvers_breadth_first_rounds_from_the_hub() -> None:
+    from mansion.planning.spatial_seeds import cut_parents
+
+    ids = ["hub", "a", "b", "c", "d", "lone"]
+    # c touches both a and b: a comes first in the labels' order, so a's share holds it; d hangs
+    # off c; the order the pairs are listed in does not matter
+    adjacency = [("d", "c"), ("hub", "b"), ("c", "b"), ("a", "hub"), ("c", "a")]
+    assert cut_parents(ids, adjacency, "hub") == {"a": "hub", "b": "hub", "c": "a", "d": "c"}
+    assert cut_parents(ids, [], "hub") == {}
+
+
+def test_rooms_the_hub_does_not_touch_are_seeded_beside_the_room_whose_share_they_grow_in() -> None:
+    from mansion.planning.spatial_seeds import nested_seeds
+
+    mask = np.zeros((40, 40), dtype=bool)
+    mask[2:38, 2:38] = True
+    free = FreeGrid(mask)
+    rooms = [SeedRoom("hub", "living_room", 600.0), SeedRoom("bath", "bathroom", 36.0),
+             SeedRoom("balcony", "balcony", 16.0), SeedRoom("store", "storage", 4.0), SeedRoom("kitchen", "kitchen", 64.0)]
+    adjacency = [("hub", "bath"), ("bath", "balcony"), ("balcony", "store"), ("hub", "kitchen")]
+    # the text put the balcony across the plan from the bathroom, in the west, and the store
+    # beside the balcony
+    seeds = {"hub": (20.5, 20.5), "bath": (33.5, 20.5), "balcony": (5.5, 20.5), "store": (5.5, 23.5), "kitchen": (20.5, 33.5)}
+    out = nested_seeds(rooms, free, adjacency, seeds, "hub")
+    assert out == nested_seeds(rooms, free, adjacency, seeds, "hub")  # deterministic
+    # the hub's own children keep their seeds
+    assert {r: out[r] for r in ("hub", "bath", "kitchen")} == {r: seeds[r] for r in ("hub", "bath", "kitchen")}
+    # the balcony beside the bathroom, on the side the text gave it (west of it), at most half
+    # the sum of their sides away (6 / 2 + 4 / 2 = 5 cells, one cell's rounding)
+    bx, by = out["balcony"]
+    assert bx < 33.5 and np.hypot(bx - 33.5, by - 20.5) <= 5.0 + 1.0
+    # the store follows the balcony
+    sx, sy = out["store"]
+    assert np.hypot(sx - bx, sy - by) <= (4.0 + 2.0) / 2 + 1.0
+    # every seed on its own free cell
+    assert all(free.contains(pt) for pt in out.values()) and len(set(out.values())) == len(out)
+    # a room already beside its parent stays where it is
+    near = {**seeds, "balcony": (36.5, 20.5), "store": (36.5, 23.5)}
+    assert nested_seeds(rooms, free, adjacency, near, "hub") == near
+
+
+def test_when_no_seed_set_read_from_the_text_lays_out_rooms_are_moved_beside_their_cut_parents(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from mansion.eval.t2d import T2DPlan, protocol_inputs
+    from mansion.eval.text_placement import solve_from_text
+    from mansion.exceptions import InfeasibleLayoutError
+
+    # a living room with a bathroom to its east, and a balcony that only the bathroom touches
+    label = np.zeros((64, 64), dtype=np.int32)
+    label[10:40, 10:40] = CLASSES.index("living_room")
+    label[10:20, 40:50] = CLASSES.index("bathroom")
+    label[10:20, 50:56] = CLASSES.index("balcony")
+    label[20:40, 40:56] = CLASSES.index("kitchen")
+    rooms = []
+    for k, t in enumerate(["living_room", "bathroom", "balcony", "kitchen"]):
+        rr, cc = np.nonzero(label == CLASSES.index(t))
+        rooms.append({"id": k, "type": t, "area_px": int(16 * rr.size),
+                      "centroid": [float(4 * (cc.mean() + 0.5)), float(4 * (rr.mean() + 0.5))],
+                      "bbox": [int(4 * cc.min()), int(4 * rr.min()), int(4 * cc.max() + 4), int(4 * rr.max() + 4)],
+                      "polygon": []})
+    plan = T2DPlan.model_validate({"source": "hand", "canvas": [256, 256], "footprint": [], "rooms": rooms,
+                                   "adjacency": [(0, 1), (0, 3), (1, 2), (1, 3)], "front_door": None,
+                                   "classes": CLASSES, "label64": label.tolist()})
+    ids = [n.id for n in protocol_inputs(plan).graph.nodes]
+    living, bath, balcony = ids[0], ids[1], ids[2]
+    text = "The balcony is in the west of the plan. The bathroom is in the northeast corner. The kitchen is in the southeast."
+
+    class _Layout:
+        grid = _Grid(np.zeros((2, 2), dtype=int), ["room"])
+
+    failed: list[dict] = []
+
+    def solve(seeds):
+        # the cut holds the bathroom's share whole only with the balcony beside the bathroom (the
+        # stand-in layout's own seeds, when it is laid out again, are one room's)
+        if balcony in seeds:
+            (x, y), (bx, by) = seeds[balcony], seeds[bath]
+            if np.hypot(x - bx, y - by) > 12:
+                failed.append(seeds)
+                raise InfeasibleLayoutError("room 'bathroom_1' in several pieces")
+        return np.zeros((64, 64), dtype=int), _Layout()
+
+    monkeypatch.setattr("mansion.eval.text_placement.layout_disagreement", lambda *a, **k: 0.0)
+    seeds, pred, _ = solve_from_text(plan, text, solve, lambda: pytest.fail("no heuristic"), lambda s, k: solve(s))
+    assert seeds is not None and pred.shape == (64, 64)
+    # the seed sets read from the text put the balcony in the west, and none of them laid out
+    assert failed and all(f[balcony][0] < 30 for f in failed)
+    # the balcony beside the bathroom, still west of it as the text says, the living room untouched
+    assert np.hypot(seeds[balcony][0] - seeds[bath][0], seeds[balcony][1] - seeds[bath][1]) <= 12
+    assert seeds[balcony][0] < seeds[bath][0] and living in seeds
 
 
 def test_every_seed_set_is_solved_under_three_random_seeds_and_the_best_regrown(monkeypatch: pytest.MonkeyPatch) -> None:

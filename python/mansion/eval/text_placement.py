@@ -15,7 +15,9 @@ and depths in proportion) and that shares most with the seed sets' layouts
 the :data:`REFINE` best are laid out again from seeds at their own rooms, and the
 :data:`REFINE_AGAIN` best of all those once more, :data:`AGAIN_ROUNDS` times. The solve is the
 caller's; ``mansion eval floorplan --planner text`` runs it under :data:`TEXT_ENERGY`. A seed set the
-solver cannot lay out is skipped; only when none can is the plan a failure.
+solver cannot lay out is skipped; when none can, they are tried with the rooms the hub does not
+touch beside their parents in the cut rounds, then the solver's own heuristic and a ring of rooms;
+only when none of those can is the plan a failure.
 """
 
 from __future__ import annotations
@@ -24,13 +26,14 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
-from mansion.eval.t2d import CELL_SIZE, GRID, T2DPlan, protocol_inputs
+from mansion.eval.t2d import CELL_SIZE, GRID, HUB_TYPE, T2DPlan, protocol_inputs
 from mansion.exceptions import MansionError
 from mansion.floorplan import EnergyWeights, SolverSettings
 from mansion.planning.spatial_language import KnownRoom, Reading, read_description
 from mansion.planning.spatial_layout import LayoutWeights, rectangle_seeds
 from mansion.planning.spatial_seeds import (
-    FreeGrid, SeedReport, SeedRoom, SeedWeights, layout_disagreement, match_rooms, place_seeds, ring_seeds,
+    FreeGrid, SeedReport, SeedRoom, SeedWeights, layout_disagreement, match_rooms, nested_seeds, place_seeds,
+    ring_seeds,
 )
 
 __all__ = [
@@ -167,7 +170,10 @@ def solve_from_text(
     (prediction, layout)`` and keep the layout that agrees best with the text and with the other
     layouts. When no seed set can be laid out, ``reseed(seeds, k)`` (the same solve under the
     solver's k-th other random seed, k = 1 … :data:`RESEEDS`) tries them again, round by round;
-    when none of those can either, ``fallback()`` (the solver's own seed heuristic, which reads
+    when none of those can either, the same with the rooms the hub does not touch seeded beside
+    the room whose share the cut grows them in
+    (:func:`mansion.planning.spatial_seeds.nested_seeds`), and what follows is made on those; when
+    none of those can either, ``fallback()`` (the solver's own seed heuristic, which reads
     neither the text nor the ground truth) is tried, and its seeds are reported as None; without
     one, or when it fails too, the rooms are seeded on a ring around the hub in the order of the
     adjacency (:func:`_ring_fallback`), and only when that cannot be laid out either is the last
@@ -207,18 +213,35 @@ def solve_from_text(
         return solve(seeds) if k == 0 else reseed(seeds, k)  # type: ignore[misc]
 
     offsets: list[int] = []
-    for k in range(RESEEDS + 1 if reseed is not None else 1):
-        for seeds, extra in runs:
-            try:
-                pred, layout = run(seeds, k + extra)
-            except MansionError as exc:
-                error = exc
-                continue
-            score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
-            solved.append((score, seeds, pred, layout))
-            offsets.append(k + extra)
-        if solved:
-            break
+
+    def attempt(runs: list[tuple[dict[str, tuple[float, float]], int]]) -> None:
+        # each solve under the round's random seed, round after round until one lays out
+        nonlocal error
+        for k in range(RESEEDS + 1 if reseed is not None else 1):
+            for seeds, extra in runs:
+                try:
+                    pred, layout = run(seeds, k + extra)
+                except MansionError as exc:
+                    error = exc
+                    continue
+                score = layout_disagreement(p.reading, p.rooms, p.free, p.adjacency, layout.grid)
+                solved.append((score, seeds, pred, layout))
+                offsets.append(k + extra)
+            if solved:
+                break
+
+    attempt(runs)
+    if not solved:
+        # a room the hub does not touch grows in its parent's share of the hub's round; one the
+        # text put across the plan from its parent splits that share, and no cut holds it whole
+        hub = next((r.id for r in p.rooms if r.room_type == HUB_TYPE), max(p.rooms, key=lambda r: r.area).id)
+        nested: list[dict[str, tuple[float, float]]] = []
+        for seeds in tried:
+            beside = nested_seeds(p.rooms, p.free, p.adjacency, seeds, hub)
+            if beside not in tried and beside not in nested:
+                nested.append(beside)
+        tried.extend(nested)
+        attempt([(seeds, extra) for extra in range(SOLVER_SEEDS if reseed is not None else 1) for seeds in nested])
     if not solved:
         assert error is not None
         if fallback is not None:

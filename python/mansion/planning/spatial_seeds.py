@@ -38,7 +38,8 @@ if TYPE_CHECKING:
 
 __all__ = [
     "DISAGREEMENT_WEIGHTS", "PROPORTION_CAP", "FreeGrid", "SeedReport", "SeedRoom", "SeedWeights",
-    "disagreement_parts", "layout_disagreement", "match_rooms", "place_seeds", "ring_seeds",
+    "cut_parents", "disagreement_parts", "layout_disagreement", "match_rooms", "nested_seeds", "place_seeds",
+    "ring_seeds",
 ]
 
 
@@ -356,6 +357,69 @@ def place_seeds(
     for text in reading.unread:
         report.ignored.append(f"{text!r}: no position, relation or size read")
     return seeds, report
+
+
+
+def cut_parents(ids: Sequence[str], adjacency: Iterable[tuple[str, str]], hub: str) -> dict[str, str]:
+    """Each room's parent in the solver's cut rounds (its BuildCutRounds, a breadth-first search
+    from the hub over the adjacency, neighbours in the order of the rooms' labels): the room whose
+    round cuts it out. The hub's children are cut from the whole plan; a room the hub does not
+    touch is grown, in the hub's round, as part of its parent's share."""
+    index = {rid: k for k, rid in enumerate(ids)}
+    edges = sorted({(min(index[a], index[b]), max(index[a], index[b]))
+                    for a, b in adjacency if a in index and b in index and a != b})
+    parent: dict[str, str] = {}
+    seen, queue = {hub}, [hub]
+    for p in queue:
+        k = index[p]
+        for a, b in edges:
+            q = ids[b] if a == k else ids[a] if b == k else None
+            if q is not None and q not in seen:
+                seen.add(q)
+                parent[q] = p
+                queue.append(q)
+    return parent
+
+
+def nested_seeds(
+    rooms: Sequence[SeedRoom],
+    free: FreeGrid,
+    adjacency: Iterable[tuple[str, str]],
+    seeds: dict[str, tuple[float, float]],
+    hub: str,
+) -> dict[str, tuple[float, float]]:
+    """``seeds`` with every room the hub does not touch brought beside its parent in the cut
+    rounds (:func:`cut_parents`): at most half the sum of the two rooms' sides (the square roots
+    of their areas) from the parent's seed, in the direction it had. The solver grows such a
+    room in the hub's round as part of its parent's share, so a seed the text put across the plan
+    from its parent splits that share in two and the round cannot be cut; beside the parent it
+    keeps the side the text gave it. Rooms are moved parents first, so a room's children follow
+    it; each seed stays on a free cell no other seed holds."""
+    import numpy as np
+
+    ids = [r.id for r in rooms]
+    area = {r.id: r.area for r in rooms}
+    mask = np.asarray(free.mask, dtype=bool)
+    rr, cc = np.nonzero(mask)
+    X, Y = free.origin[0] + (cc + 0.5) * free.cell, free.origin[1] + (rr + 0.5) * free.cell
+    out = dict(seeds)
+    parents = cut_parents(ids, adjacency, hub)
+    for rid, p in parents.items():  # breadth-first: parents before their children
+        if p == hub or rid not in out or p not in out:
+            continue
+        (px, py), (x, y) = out[p], out[rid]
+        reach = (math.sqrt(max(area[p], 0.0)) + math.sqrt(max(area[rid], 0.0))) / 2
+        d = math.hypot(x - px, y - py)
+        if d <= reach:
+            continue
+        tx, ty = px + (x - px) * reach / d, py + (y - py) * reach / d
+        held = np.zeros(X.size, dtype=bool)
+        for other, (ox, oy) in out.items():
+            if other != rid:
+                held |= (np.abs(X - ox) < free.cell / 2) & (np.abs(Y - oy) < free.cell / 2)
+        j = int(np.argmin((X - tx) ** 2 + (Y - ty) ** 2 + np.where(held, 1e12, 0.0)))
+        out[rid] = (float(X[j]), float(Y[j]))
+    return out
 
 
 #: How far from the region's middle to its edge :func:`ring_seeds` puts each room.
