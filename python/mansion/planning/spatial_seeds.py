@@ -359,12 +359,13 @@ def place_seeds(
     return seeds, report
 
 
-
 def cut_parents(ids: Sequence[str], adjacency: Iterable[tuple[str, str]], hub: str) -> dict[str, str]:
     """Each room's parent in the solver's cut rounds (its BuildCutRounds, a breadth-first search
-    from the hub over the adjacency, neighbours in the order of the rooms' labels): the room whose
-    round cuts it out. The hub's children are cut from the whole plan; a room the hub does not
-    touch is grown, in the hub's round, as part of its parent's share."""
+    from the hub over the adjacency, neighbours in the order of the rooms' labels, which are their
+    places in ``ids``, the graph's order of nodes): the room whose round cuts it out. The hub's
+    children are cut from the whole plan; a room the hub does not touch is grown, in the hub's
+    round, as part of its parent's share. (The solver's search passes over stair and elevator
+    cores; the rooms given here are all searched, as in a T2D plan, which has none.)"""
     index = {rid: k for k, rid in enumerate(ids)}
     edges = sorted({(min(index[a], index[b]), max(index[a], index[b]))
                     for a, b in adjacency if a in index and b in index and a != b})
@@ -393,8 +394,9 @@ def nested_seeds(
     of their areas) from the parent's seed, in the direction it had. The solver grows such a
     room in the hub's round as part of its parent's share, so a seed the text put across the plan
     from its parent splits that share in two and the round cannot be cut; beside the parent it
-    keeps the side the text gave it. Rooms are moved parents first, so a room's children follow
-    it; each seed stays on a free cell no other seed holds."""
+    keeps the side the text gave it. ``rooms`` are in the graph's order of nodes (see
+    :func:`cut_parents`); parents are moved first, and each room is measured from where its parent
+    ends up; each seed stays on a free cell no other seed holds."""
     import numpy as np
 
     ids = [r.id for r in rooms]
