@@ -367,6 +367,8 @@ def cut_parents(ids: Sequence[str], adjacency: Iterable[tuple[str, str]], hub: s
     round, as part of its parent's share. (The solver's search passes over stair and elevator
     cores; the rooms given here are all searched, as in a T2D plan, which has none.)"""
     index = {rid: k for k, rid in enumerate(ids)}
+    if hub not in index:
+        raise InvalidInputError(f"the hub {hub!r} is not one of the rooms {list(ids)}")
     edges = sorted({(min(index[a], index[b]), max(index[a], index[b]))
                     for a, b in adjacency if a in index and b in index and a != b})
     parent: dict[str, str] = {}
@@ -393,8 +395,8 @@ def nested_seeds(
     rounds (:func:`cut_parents`): at most half the sum of the two rooms' sides (the square roots
     of their areas) from the parent's seed, in the direction it had. The solver grows such a
     room in the hub's round as part of its parent's share, so a seed the text put across the plan
-    from its parent splits that share in two and the round cannot be cut; beside the parent it
-    keeps the side the text gave it. ``rooms`` are in the graph's order of nodes (see
+    from its parent can split that share in two, and then no cut of the round holds it whole;
+    beside the parent it keeps the side the text gave it. ``rooms`` are in the graph's order of nodes (see
     :func:`cut_parents`); parents are moved first, and each room is measured from where its parent
     ends up; each seed stays on a free cell no other seed holds."""
     import numpy as np
