@@ -26,7 +26,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, replace
 from typing import Any
 
-from mansion.eval.t2d import CELL_SIZE, GRID, HUB_TYPE, T2DPlan, protocol_inputs
+from mansion.eval.t2d import CELL_SIZE, GRID, T2DPlan, protocol_inputs
 from mansion.exceptions import MansionError
 from mansion.floorplan import EnergyWeights, SolverSettings
 from mansion.planning.spatial_language import KnownRoom, Reading, read_description
@@ -133,6 +133,8 @@ class TextProblem:
     rooms: list[SeedRoom]
     free: FreeGrid
     adjacency: list[tuple[str, str]]
+    #: the room the solver's cut rounds start from: the protocol's "main" node
+    hub: str
 
 
 def text_problem(plan: T2DPlan, description: str) -> TextProblem:
@@ -148,7 +150,8 @@ def text_problem(plan: T2DPlan, description: str) -> TextProblem:
     # the free mask with rows going up: mask row r (top) is solver row GRID - 1 - r
     free = FreeGrid(np.ascontiguousarray((plan.label_array() != 0)[::-1]), (0.0, 0.0), CELL_SIZE)
     assert free.mask.shape == (GRID, GRID)
-    return TextProblem(reading, rooms, free, adjacency)
+    hub = next(n.id for n in nodes if n.type == "main")
+    return TextProblem(reading, rooms, free, adjacency, hub)
 
 
 def plan_text_seeds_offline(
@@ -205,18 +208,17 @@ def solve_from_text(
         seeds = rectangle_seeds(p.reading, p.rooms, p.free, p.adjacency, start=last, weights=lw)
         if seeds not in tried:
             tried.append(seeds)
-    # every seed set is solved under :data:`SOLVER_SEEDS` random seeds of the solver; each solve
-    # is (seeds, offset of the solver's random seed)
-    runs = [(seeds, extra) for extra in range(SOLVER_SEEDS if reseed is not None else 1) for seeds in tried]
-
     def run(seeds: dict[str, tuple[float, float]], k: int) -> tuple[Any, Any]:
         return solve(seeds) if k == 0 else reseed(seeds, k)  # type: ignore[misc]
 
     offsets: list[int] = []
 
-    def attempt(runs: list[tuple[dict[str, tuple[float, float]], int]]) -> None:
-        # each solve under the round's random seed, round after round until one lays out
+    def attempt(sets: list[dict[str, tuple[float, float]]]) -> None:
+        # every seed set is solved under :data:`SOLVER_SEEDS` random seeds of the solver, each
+        # solve a (seeds, offset of the solver's random seed); all of them under the round's
+        # random seed, round after round until one lays out
         nonlocal error
+        runs = [(seeds, extra) for extra in range(SOLVER_SEEDS if reseed is not None else 1) for seeds in sets]
         for k in range(RESEEDS + 1 if reseed is not None else 1):
             for seeds, extra in runs:
                 try:
@@ -230,18 +232,17 @@ def solve_from_text(
             if solved:
                 break
 
-    attempt(runs)
+    attempt(tried)
     if not solved:
         # a room the hub does not touch grows in its parent's share of the hub's round; one the
         # text put across the plan from its parent splits that share, and no cut holds it whole
-        hub = next((r.id for r in p.rooms if r.room_type == HUB_TYPE), max(p.rooms, key=lambda r: r.area).id)
         nested: list[dict[str, tuple[float, float]]] = []
         for seeds in tried:
-            beside = nested_seeds(p.rooms, p.free, p.adjacency, seeds, hub)
+            beside = nested_seeds(p.rooms, p.free, p.adjacency, seeds, p.hub)
             if beside not in tried and beside not in nested:
                 nested.append(beside)
         tried.extend(nested)
-        attempt([(seeds, extra) for extra in range(SOLVER_SEEDS if reseed is not None else 1) for seeds in nested])
+        attempt(nested)
     if not solved:
         assert error is not None
         if fallback is not None:
